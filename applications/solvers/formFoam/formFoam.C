@@ -1,0 +1,34 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Application
+    formFoam
+
+Description
+    Implicit finite-element solver for metal forming (Kawka & Bathe): mixed
+    u/p solid elements, static Newton-Raphson with the consistent tangent.
+    The case is a scene: only the effects it declares are built (see
+    src/formFoam/formScene/formScene.H for the dictionaries).
+
+Usage
+    formFoam [-case dir]
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "formScene.H"
+
+using namespace Foam;
+
+int main(int argc, char *argv[])
+{
+    argList::addNote("Implicit FE forming solver (formFoam)");
+    argList::noParallel();
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    formScene scene(runTime);
+    scene.run();
+
+    return 0;
+}

@@ -1,0 +1,110 @@
+#include "pointLocator.H"
+#include <cmath>
+
+namespace
+{
+// 1D quadratic Lagrange polynomials at nodes -1, 0, +1
+inline void lagrange2(double x, double L[3])
+{
+    L[0] = 0.5*x*(x - 1.0);
+    L[1] = 1.0 - x*x;
+    L[2] = 0.5*x*(x + 1.0);
+}
+}
+
+form::vecX form::quadShapeValues(int nNodes, double r, double s)
+{
+    vecX N(nNodes);
+    if (nNodes == 4)
+    {
+        N << 0.25*(1 - r)*(1 - s), 0.25*(1 + r)*(1 - s),
+             0.25*(1 + r)*(1 + s), 0.25*(1 - r)*(1 + s);
+        return N;
+    }
+    // 9-node: index of each node in the (r, s) tensor grid of -1, 0, 1
+    static const int ir[9] = {0, 2, 2, 0, 1, 2, 1, 0, 1};
+    static const int is[9] = {0, 0, 2, 2, 0, 1, 2, 1, 1};
+    double Lr[3], Ls[3];
+    lagrange2(r, Lr);
+    lagrange2(s, Ls);
+    for (int a = 0; a < 9; ++a) N(a) = Lr[ir[a]]*Ls[is[a]];
+    return N;
+}
+
+
+form::pointLocation form::locatePoint
+(
+    const feMesh& mesh,
+    const Eigen::Vector2d& x,
+    double tol
+)
+{
+    pointLocation best;
+    double bestErr = 1e30;
+    for (int b = 0; b < int(mesh.blocks.size()); ++b)
+    {
+        const auto& blk = mesh.blocks[b];
+        for (int e = 0; e < blk.nElements(); ++e)
+        {
+            Eigen::Matrix<double, 4, 2> C;
+            for (int k = 0; k < 4; ++k)
+            {
+                C.row(k) = mesh.X.row(blk.nodes(e)[k]).head<2>();
+            }
+            // bounding-box rejection
+            const Eigen::Vector2d lo = C.colwise().minCoeff();
+            const Eigen::Vector2d hi = C.colwise().maxCoeff();
+            const double h = (hi - lo).norm();
+            if ((x.array() < lo.array() - 1e-6*h).any()
+             || (x.array() > hi.array() + 1e-6*h).any())
+            {
+                continue;
+            }
+            // Newton inversion of the bilinear map
+            double r = 0, s = 0;
+            for (int it = 0; it < 30; ++it)
+            {
+                const vecX N = quadShapeValues(4, r, s);
+                Eigen::Vector2d xr = C.transpose()*N;
+                Eigen::Matrix<double, 4, 2> dN;
+                dN << -(1 - s), -(1 - r),  (1 - s), -(1 + r),
+                       (1 + s),  (1 + r), -(1 + s),  (1 - r);
+                dN *= 0.25;
+                const Eigen::Matrix2d J = C.transpose()*dN;
+                const Eigen::Vector2d d = J.inverse()*(x - xr);
+                r += d(0);
+                s += d(1);
+                if (d.norm() < 1e-14) break;
+            }
+            const double err = std::max(std::abs(r), std::abs(s)) - 1.0;
+            if (err < bestErr)
+            {
+                bestErr = err;
+                best = {b, e, r, s};
+            }
+        }
+    }
+    if (bestErr > tol)
+    {
+        return pointLocation();
+    }
+    return best;
+}
+
+
+form::vecX form::interpolate
+(
+    const feMesh& mesh,
+    const pointLocation& loc,
+    const matX& f
+)
+{
+    const auto& blk = mesh.blocks[loc.block];
+    const vecX N = quadShapeValues(blk.nodesPerElement, loc.r, loc.s);
+    vecX v = vecX::Zero(f.cols());
+    for (int a = 0; a < blk.nodesPerElement; ++a)
+    {
+        v += N(a)*f.row(blk.nodes(loc.element)[a]).transpose();
+    }
+    return v;
+}

@@ -1,0 +1,292 @@
+#include "polyMeshToFeMesh.H"
+#include "emptyPolyPatch.H"
+#include "wedgePolyPatch.H"
+#include "HashTable.H"
+#include "edge.H"
+
+Foam::Vector2D<Foam::scalar>
+Foam::polyMeshToFeMesh::project(const point& p) const
+{
+    if (projection_ == projection::planar)
+    {
+        return Vector2D<scalar>(p.x(), p.y());
+    }
+    const scalar z = (p & axis_);
+    const scalar r = mag(p - z*axis_);
+    return Vector2D<scalar>(r, z);
+}
+
+
+Eigen::Vector2d Foam::polyMeshToFeMesh::toPlane(const point& p) const
+{
+    const Vector2D<scalar> q = project(p);
+    return Eigen::Vector2d(q.x(), q.y());
+}
+
+
+Foam::vector Foam::polyMeshToFeMesh::toSpace
+(
+    const point& p,
+    const Eigen::Vector2d& v
+) const
+{
+    if (projection_ == projection::planar)
+    {
+        return vector(v(0), v(1), 0);
+    }
+    const vector radial = p - (p & axis_)*axis_;
+    const scalar r = mag(radial);
+    const vector er = r > SMALL ? radial/r : Zero;
+    return v(0)*er + v(1)*axis_;
+}
+
+
+Foam::polyMeshToFeMesh::polyMeshToFeMesh
+(
+    const polyMesh& mesh,
+    label nodesPerElement,
+    const word& elementType,
+    const word& materialName
+)
+:
+    mesh_(mesh),
+    projection_(projection::planar),
+    axis_(0, 0, 1),
+    pointToNode_(mesh.nPoints(), -1),
+    frontFace_(mesh.nCells(), -1)
+{
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const word region = mesh.name();
+
+    // Front/back patches decide the projection
+    boolList isFrontBack(patches.size(), false);
+    bool anyEmpty = false, anyWedge = false;
+    forAll(patches, patchi)
+    {
+        if (isA<emptyPolyPatch>(patches[patchi]))
+        {
+            isFrontBack[patchi] = true;
+            anyEmpty = true;
+        }
+        else if (isA<wedgePolyPatch>(patches[patchi]))
+        {
+            isFrontBack[patchi] = true;
+            anyWedge = true;
+            axis_ = refCast<const wedgePolyPatch>(patches[patchi]).axis();
+            axis_ /= mag(axis_);
+        }
+    }
+    if (!anyEmpty && !anyWedge)
+    {
+        FatalErrorInFunction
+            << "The mesh of solid region '" << region << "' has no 'empty' or"
+            << " 'wedge' patches." << nl
+            << "    2D solid meshes must be one cell thick with empty (plane"
+            << " strain) or wedge (axisymmetric) front and back patches;"
+            << nl << "    3D solid elements are not available yet."
+            << exit(FatalError);
+    }
+    if (anyWedge) projection_ = projection::wedge;
+
+    // The front face of every cell: the one of its two front/back faces
+    // that lies on the positive side (largest z for planar meshes; for
+    // wedges, the side of the wedge normal's positive component).
+    const vectorField& Sf = mesh.faceAreas();
+    const vectorField& Cf = mesh.faceCentres();
+    labelList nFrontBack(mesh.nCells(), 0);
+    forAll(patches, patchi)
+    {
+        if (!isFrontBack[patchi]) continue;
+        const polyPatch& pp = patches[patchi];
+        forAll(pp, i)
+        {
+            const label facei = pp.start() + i;
+            const label celli = mesh.faceOwner()[facei];
+            ++nFrontBack[celli];
+            const label other = frontFace_[celli];
+            const bool better =
+                other < 0
+             || (
+                    projection_ == projection::planar
+                  ? Cf[facei].z() > Cf[other].z()
+                  : (Sf[facei] & vector(0, 0, 1)) > (Sf[other] & vector(0, 0, 1))
+                );
+            if (better) frontFace_[celli] = facei;
+        }
+    }
+
+    fe_.nDim = 2;
+    DynamicList<Eigen::Vector2d> X;
+    form::elementBlock block;
+    block.name = region;
+    block.elementType = elementType;
+    block.materialName = materialName;
+    block.nodesPerElement = nodesPerElement;
+    block.connectivity.reserve(mesh.nCells()*nodesPerElement);
+
+    HashTable<label, edge, Hash<edge>> midNode;
+    const faceList& faces = mesh.faces();
+    const pointField& pts = mesh.points();
+
+    // corner nodes of each cell in counter-clockwise order
+    List<FixedList<label, 4>> cellCorners(mesh.nCells());
+
+    forAll(frontFace_, celli)
+    {
+        if (nFrontBack[celli] != 2 || faces[frontFace_[celli]].size() != 4)
+        {
+            FatalErrorInFunction
+                << "Cell " << celli << " of solid region '" << region
+                << "' cannot be upgraded to a quad element: it has "
+                << nFrontBack[celli] << " faces on empty/wedge patches and a"
+                << " front face with "
+                << (frontFace_[celli] >= 0 ? faces[frontFace_[celli]].size() : 0)
+                << " points." << nl
+                << "    2D solid meshes must be one cell thick, made of"
+                << " hexahedra (blockMesh with 1 cell in the third direction)."
+                << exit(FatalError);
+        }
+        const face& f = faces[frontFace_[celli]];
+        FixedList<label, 4> c;
+        Eigen::Matrix<double, 4, 2> P;
+        for (label k = 0; k < 4; ++k)
+        {
+            c[k] = f[k];
+            P.row(k) = toPlane(pts[f[k]]).transpose();
+        }
+        // signed area (shoelace); reverse to counter-clockwise if needed
+        scalar area = 0;
+        for (label k = 0; k < 4; ++k)
+        {
+            const label l = (k + 1) % 4;
+            area += P(k, 0)*P(l, 1) - P(l, 0)*P(k, 1);
+        }
+        if (area < 0)
+        {
+            std::swap(c[1], c[3]);
+            P.row(1).swap(P.row(3));
+        }
+        // convexity: every corner's cross product positive
+        for (label k = 0; k < 4; ++k)
+        {
+            const Eigen::Vector2d a = P.row((k + 1) % 4) - P.row(k);
+            const Eigen::Vector2d b = P.row((k + 3) % 4) - P.row(k);
+            if (a(0)*b(1) - a(1)*b(0) <= 0)
+            {
+                FatalErrorInFunction
+                    << "Cell " << celli << " of solid region '" << region
+                    << "' is degenerate or not convex in the solid plane"
+                    << " (corner " << k << " at " << pts[c[k]] << ")." << nl
+                    << "    Check the blockMesh vertices and their order."
+                    << exit(FatalError);
+            }
+        }
+        cellCorners[celli] = c;
+        for (label k = 0; k < 4; ++k)
+        {
+            if (pointToNode_[c[k]] < 0)
+            {
+                pointToNode_[c[k]] = X.size();
+                X.append(toPlane(pts[c[k]]));
+            }
+        }
+    }
+
+    forAll(cellCorners, celli)
+    {
+        const FixedList<label, 4>& c = cellCorners[celli];
+        for (label k = 0; k < 4; ++k)
+        {
+            block.connectivity.push_back(pointToNode_[c[k]]);
+        }
+        if (nodesPerElement == 9)
+        {
+            for (label k = 0; k < 4; ++k)
+            {
+                const edge e(c[k], c[(k + 1) % 4]);
+                auto iter = midNode.find(e);
+                if (iter.found())
+                {
+                    block.connectivity.push_back(*iter);
+                }
+                else
+                {
+                    const label n = X.size();
+                    X.append(0.5*(X[pointToNode_[e[0]]] + X[pointToNode_[e[1]]]));
+                    midNode.insert(e, n);
+                    block.connectivity.push_back(n);
+                }
+            }
+            Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+            for (label k = 0; k < 4; ++k) centre += 0.25*X[pointToNode_[c[k]]];
+            block.connectivity.push_back(X.size());
+            X.append(centre);
+        }
+    }
+
+    // Back points: same FE node as the front point of the same cell that
+    // projects onto the same FE-plane position
+    forAll(cellCorners, celli)
+    {
+        for (const label facei : mesh.cells()[celli])
+        {
+            for (const label pointi : faces[facei])
+            {
+                if (pointToNode_[pointi] >= 0) continue;
+                const Eigen::Vector2d q = toPlane(pts[pointi]);
+                scalar best = GREAT;
+                for (const label c : cellCorners[celli])
+                {
+                    const scalar d = (toPlane(pts[c]) - q).norm();
+                    if (d < best)
+                    {
+                        best = d;
+                        pointToNode_[pointi] = pointToNode_[c];
+                    }
+                }
+            }
+        }
+    }
+
+    fe_.X.resize(X.size(), 2);
+    forAll(X, i) fe_.X.row(i) = X[i].transpose();
+
+    // Boundary patches -> face sets (element edges) and node sets
+    forAll(patches, patchi)
+    {
+        if (isFrontBack[patchi]) continue;
+        const polyPatch& pp = patches[patchi];
+        std::vector<form::feFace>& faceSet = fe_.faceSets[pp.name()];
+        std::vector<int>& nodeSet = fe_.nodeSets[pp.name()];
+        forAll(pp, i)
+        {
+            const label facei = pp.start() + i;
+            const label celli = mesh.faceOwner()[facei];
+            const FixedList<label, 4>& c = cellCorners[celli];
+            // the cell edge whose two corners both belong to this face
+            label localEdge = -1;
+            for (label k = 0; k < 4; ++k)
+            {
+                if (faces[facei].found(c[k]) && faces[facei].found(c[(k + 1) % 4]))
+                {
+                    localEdge = k;
+                }
+            }
+            if (localEdge < 0) continue;    // face on the axis of a wedge
+            form::feFace fef;
+            fef.block = 0;
+            fef.element = celli;
+            fef.localFace = localEdge;
+            const int* en = block.nodes(celli);
+            fef.nodes.push_back(en[localEdge]);
+            fef.nodes.push_back(en[(localEdge + 1) % 4]);
+            if (nodesPerElement == 9) fef.nodes.push_back(en[4 + localEdge]);
+            for (const int n : fef.nodes) nodeSet.push_back(n);
+            faceSet.push_back(fef);
+        }
+        std::sort(nodeSet.begin(), nodeSet.end());
+        nodeSet.erase(std::unique(nodeSet.begin(), nodeSet.end()), nodeSet.end());
+    }
+
+    fe_.blocks.push_back(std::move(block));
+}

@@ -1,0 +1,504 @@
+#include "solidRegion.H"
+#include "dictionaryChecks.H"
+#include "Function1.H"
+#include "IFstream.H"
+#include "IOField.H"
+#include "OSspecific.H"
+#include "pointFields.H"
+#include "pointLocator.H"
+#include "volFields.H"
+#include "emptyFvPatch.H"
+#include "wedgeFvPatch.H"
+
+// * * * * * * * * * * * * * * * Private Functions  * * * * * * * * * * * * //
+
+void Foam::solidRegion::readMaterial(const dictionary& dict)
+{
+    materialType_ = dict.get<word>("type");
+    const auto& reg = form::material::registry();
+    const auto iter = reg.find(materialType_);
+    if (iter == reg.end())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown material type '" << materialType_ << "' in "
+            << dict.name() << nl << "    Valid types: "
+            << form::material::validTypes().c_str()
+            << exit(FatalIOError);
+    }
+    wordList allowed(1, word("type"));
+    form::parameterMap params;
+    for (const form::parameterSpec& spec : iter->second.parameters)
+    {
+        allowed.append(word(spec.name));
+        params[spec.name] = dict.get<scalar>(word(spec.name));
+    }
+    checkKeywords(dict, allowed);
+    try
+    {
+        material_ = form::material::New(materialType_, params);
+    }
+    catch (const form::inputError& err)
+    {
+        fatalInput(dict, err);
+    }
+}
+
+
+void Foam::solidRegion::readBoundaryConditions()
+{
+    const fileName path =
+        runTime_.path()/runTime_.timeName()/name_/"D";
+    if (!isFile(path))
+    {
+        FatalErrorInFunction
+            << "Missing boundary conditions of solid region '" << name_
+            << "': file " << path << " not found"
+            << exit(FatalError);
+    }
+    IFstream is(path);
+    const dictionary fieldDict(is);
+    const dictionary& bf = fieldDict.subDict("boundaryField");
+
+    const wordList validTypes
+    {
+        "fixedDisplacement", "traction", "pressure", "free", "empty", "wedge"
+    };
+
+    const form::feMesh& fe = feMesh_->feMesh();
+    for (const polyPatch& pp : mesh_->boundaryMesh())
+    {
+        const bool frontBack =
+            isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp);
+        if (!bf.found(pp.name()))
+        {
+            if (frontBack) continue;
+            FatalIOErrorInFunction(bf)
+                << "No boundary condition for patch '" << pp.name()
+                << "' of solid region '" << name_ << "' in " << bf.name()
+                << nl << "    Valid types: " << validTypes
+                << exit(FatalIOError);
+        }
+        const dictionary& pd = bf.subDict(pp.name());
+        const word type = pd.get<word>("type");
+        if (!validTypes.found(type))
+        {
+            FatalIOErrorInFunction(pd)
+                << "Unknown boundary condition type '" << type
+                << "' for patch '" << pp.name() << "' in " << pd.name() << nl
+                << "    Valid types: " << validTypes
+                << exit(FatalIOError);
+        }
+        if (frontBack != (type == "empty" || type == "wedge"))
+        {
+            FatalIOErrorInFunction(pd)
+                << "Patch '" << pp.name() << "' is of mesh type "
+                << pp.type() << " but its condition is '" << type << "'"
+                << exit(FatalIOError);
+        }
+        if (frontBack || type == "free")
+        {
+            checkKeywords(pd, {"type", "value"});
+            continue;
+        }
+
+        const std::vector<int>& nodes = fe.nodeSets.at(pp.name());
+        if (type == "fixedDisplacement")
+        {
+            checkKeywords(pd, {"type", "components", "displacement", "value"});
+            labelList comps;
+            if (pd.found("components"))
+            {
+                for (const word& c : pd.get<wordList>("components"))
+                {
+                    comps.append(planeComponent(c, pd));
+                }
+            }
+            else
+            {
+                comps = labelList({0, 1});
+            }
+            std::shared_ptr<Function1<vector>> disp;
+            if (pd.found("displacement"))
+            {
+                disp.reset(Function1<vector>::New("displacement", pd).ptr());
+            }
+            for (const label c : comps)
+            {
+                form::timeFunction f = nullptr;
+                if (disp)
+                {
+                    f = [disp, c](double t) { return disp->value(t)[c]; };
+                }
+                model_->addConstraint(nodes, c, f);
+            }
+        }
+        else if (type == "traction")
+        {
+            checkKeywords(pd, {"type", "traction", "value"});
+            std::shared_ptr<Function1<vector>> tr
+            (
+                Function1<vector>::New("traction", pd).ptr()
+            );
+            model_->addTraction
+            (
+                pp.name(),
+                [tr](double t)
+                {
+                    const vector v = tr->value(t);
+                    return Eigen::Vector2d(v.x(), v.y());
+                }
+            );
+        }
+        else if (type == "pressure")
+        {
+            checkKeywords(pd, {"type", "pressure", "value"});
+            std::shared_ptr<Function1<scalar>> pr
+            (
+                Function1<scalar>::New("pressure", pd).ptr()
+            );
+            model_->addPressure
+            (
+                pp.name(),
+                [pr](double t) { return pr->value(t); }
+            );
+            hasFollowerLoads_ = true;
+        }
+    }
+    // entries for patches that do not exist
+    for (const entry& e : bf)
+    {
+        if (mesh_->boundaryMesh().findPatchID(e.keyword()) < 0)
+        {
+            FatalIOErrorInFunction(bf)
+                << "Boundary condition for patch '" << e.keyword()
+                << "', which the mesh of solid region '" << name_
+                << "' does not have" << nl << "    Patches: "
+                << mesh_->boundaryMesh().names()
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::solidRegion::solidRegion(const Time& runTime, const word& name)
+:
+    runTime_(runTime),
+    name_(name),
+    properties_
+    (
+        IOobject
+        (
+            "solidProperties",
+            runTime.constant(),
+            name,
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    )
+{
+    checkKeywords(properties_, {"analysisType", "elementType", "material"});
+    const word analysisName = properties_.get<word>("analysisType");
+    try
+    {
+        analysis_ = form::analysisTypeFromName(analysisName);
+        if (analysis_ == form::analysisType::solid3D)
+        {
+            throw form::inputError
+            (
+                "analysisType",
+                "3D solid elements are not available yet; valid: "
+                "planeStrain axisymmetric"
+            );
+        }
+    }
+    catch (const form::inputError& err)
+    {
+        fatalInput(properties_, err);
+    }
+
+    elementType_ = properties_.get<word>("elementType");
+    label nodesPerElement = 0;
+    try
+    {
+        nodesPerElement =
+            form::solidElement::New(elementType_, analysis_)->nNodes();
+    }
+    catch (const form::inputError& err)
+    {
+        fatalInput(properties_, err);
+    }
+
+    readMaterial(properties_.subDict("material"));
+
+    mesh_.reset
+    (
+        new fvMesh
+        (
+            IOobject
+            (
+                name,
+                runTime.timeName(),
+                runTime,
+                IOobject::MUST_READ
+            )
+        )
+    );
+
+    feMesh_.reset
+    (
+        new polyMeshToFeMesh(*mesh_, nodesPerElement, elementType_, "material")
+    );
+
+    if
+    (
+        analysis_ == form::analysisType::axisymmetric
+     && feMesh_->feMesh().X.col(0).minCoeff() < -SMALL
+    )
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Axisymmetric solid region '" << name_ << "' has points at"
+            << " negative radius (x < 0); the axis is x = 0"
+            << exit(FatalIOError);
+    }
+
+    std::map<std::string, std::shared_ptr<form::material>> materials
+    {
+        {"material", material_}
+    };
+    model_.reset
+    (
+        new form::solidModel(feMesh_->feMesh(), analysis_, materials)
+    );
+    readBoundaryConditions();
+    model_->finalise();
+
+    vtk_.reset(new form::vtkWriter(runTime.path()/"VTK", name_));
+}
+
+
+Foam::solidRegion::~solidRegion() = default;
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::string Foam::solidRegion::describe() const
+{
+    OStringStream os;
+    os  << "solid region '" << name_ << "': "
+        << form::analysisTypeName(analysis_) << ", "
+        << feMesh_->feMesh().nElements() << " " << elementType_
+        << " elements, " << materialType_ << ", "
+        << feMesh_->feMesh().nNodes() << " nodes, "
+        << model_->nFreeDofs() << " free dofs, "
+        << model_->nPrescribedDofs() << " constrained";
+    return os.str();
+}
+
+
+void Foam::solidRegion::write(const word& timeName, scalar time)
+{
+    const form::feMesh& fe = feMesh_->feMesh();
+    const form::matX U = model_->displacement();
+    const std::vector<form::elementResult> results = model_->elementResults();
+
+    // Fields go to a temporary instance that is renamed when complete
+    const word tmpInstance = "." + timeName + ".writing";
+    const fileName tmpDir = runTime_.path()/tmpInstance;
+    rmDir(tmpDir);
+
+    const auto io = [&](const word& fieldName)
+    {
+        return IOobject
+        (
+            fieldName, tmpInstance, *mesh_,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        );
+    };
+
+    // Nodal displacement at the polyMesh points
+    pointVectorField pointD
+    (
+        io("pointD"),
+        pointMesh::New(*mesh_),
+        dimensionedVector(dimLength, Zero)
+    );
+    const pointField& pts = mesh_->points();
+    forAll(pts, pointi)
+    {
+        const label n = feMesh_->pointToNode()[pointi];
+        if (n >= 0)
+        {
+            pointD[pointi] =
+                feMesh_->toSpace(pts[pointi], U.row(n).transpose());
+        }
+    }
+
+    volVectorField D(io("D"), *mesh_, dimensionedVector(dimLength, Zero));
+    volSymmTensorField sigma
+    (
+        io("sigma"), *mesh_, dimensionedSymmTensor(dimPressure, Zero)
+    );
+    volScalarField sigmaEq(io("sigmaEq"), *mesh_, dimensionedScalar(dimPressure, Zero));
+    volScalarField p(io("p"), *mesh_, dimensionedScalar(dimPressure, Zero));
+    volScalarField epsilonEq(io("epsilonEq"), *mesh_, dimensionedScalar(dimless, Zero));
+
+    const form::elementBlock& blk = fe.blocks[0];
+    const form::vecX Nc = form::quadShapeValues(blk.nodesPerElement, 0, 0);
+    const vectorField& C = mesh_->C();
+    forAll(C, celli)
+    {
+        Eigen::Vector2d u = Eigen::Vector2d::Zero();
+        for (int a = 0; a < blk.nodesPerElement; ++a)
+        {
+            u += Nc(a)*U.row(blk.nodes(celli)[a]).transpose();
+        }
+        D[celli] = feMesh_->toSpace(C[celli], u);
+
+        // Cauchy stress from the FE plane (first, second, out-of-plane) to
+        // the polyMesh space
+        const form::elementResult& r = results[celli];
+        const vector e1 = feMesh_->toSpace(C[celli], Eigen::Vector2d(1, 0));
+        const vector e2 = feMesh_->toSpace(C[celli], Eigen::Vector2d(0, 1));
+        const vector e3 = e1 ^ e2;
+        const tensor Q(e1, e2, e3);     // rows: basis vectors
+        tensor s(Zero);
+        for (direction i = 0; i < 3; ++i)
+        {
+            for (direction j = 0; j < 3; ++j)
+            {
+                s(i, j) = r.cauchy(i, j);
+            }
+        }
+        sigma[celli] = symm(Q.T() & s & Q);
+        sigmaEq[celli] = sqrt(1.5*magSqr(dev(sigma[celli])));
+        p[celli] = r.pressure;
+        epsilonEq[celli] = r.equivalentStrain;
+    }
+    // calculated patches: face values from the nodal displacements
+    forAll(D.boundaryField(), patchi)
+    {
+        fvPatchVectorField& pf = D.boundaryFieldRef()[patchi];
+        if (isA<emptyFvPatch>(pf.patch()) || isA<wedgeFvPatch>(pf.patch()))
+        {
+            continue;
+        }
+        const polyPatch& pp = pf.patch().patch();
+        forAll(pp, i)
+        {
+            const face& f = pp[i];
+            vector sum(Zero);
+            for (const label pointi : f) sum += pointD[pointi];
+            pf[i] = sum/f.size();
+        }
+    }
+    D.correctBoundaryConditions();
+
+    IOField<vector> feU(io("feU"), vectorField(fe.nNodes(), Zero));
+    for (int n = 0; n < fe.nNodes(); ++n)
+    {
+        feU[n] = vector(U(n, 0), U(n, 1), 0);
+    }
+
+    bool ok = true;
+    ok = pointD.write() && ok;
+    ok = D.write() && ok;
+    ok = sigma.write() && ok;
+    ok = sigmaEq.write() && ok;
+    ok = p.write() && ok;
+    ok = epsilonEq.write() && ok;
+    ok = feU.write() && ok;
+    if (!ok)
+    {
+        FatalErrorInFunction
+            << "Writing the fields of region '" << name_ << "' to "
+            << tmpDir << " failed" << exit(FatalError);
+    }
+
+    // Move region fields into place: <time>/<region>
+    const fileName timeDir = runTime_.path()/timeName;
+    mkDir(timeDir);
+    rmDir(timeDir/name_);
+    if (!Foam::mv(tmpDir/name_, timeDir/name_))
+    {
+        FatalErrorInFunction
+            << "Cannot move " << tmpDir/name_ << " to " << timeDir/name_
+            << exit(FatalError);
+    }
+    rmDir(tmpDir);
+
+    vtk_->write(time, fe, U, results);
+}
+
+
+bool Foam::solidRegion::readState(const word& timeName)
+{
+    IOobject io
+    (
+        "feU", timeName, *mesh_, IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    if (!io.typeHeaderOk<IOField<vector>>(true))
+    {
+        return false;
+    }
+    IOField<vector> feU(io);
+    const form::feMesh& fe = feMesh_->feMesh();
+    if (feU.size() != fe.nNodes())
+    {
+        FatalErrorInFunction
+            << "Restart state " << feU.objectPath() << " has " << feU.size()
+            << " nodes; the mesh of region '" << name_ << "' has "
+            << fe.nNodes() << exit(FatalError);
+    }
+    form::vecX dU = -model_->U();
+    for (int n = 0; n < fe.nNodes(); ++n)
+    {
+        dU(2*n) += feU[n].x();
+        dU(2*n + 1) += feU[n].y();
+    }
+    model_->setDisplacement(model_->U() + dU);
+    return true;
+}
+
+
+Foam::scalar Foam::solidRegion::displacementAt
+(
+    const point& pt,
+    label component,
+    const dictionary& dict
+) const
+{
+    const form::feMesh& fe = feMesh_->feMesh();
+    const form::pointLocation loc =
+        form::locatePoint(fe, feMesh_->toPlane(pt), 1e-6);
+    if (!loc.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Point " << pt << " in " << dict.name()
+            << " lies outside the mesh of solid region '" << name_ << "'"
+            << exit(FatalIOError);
+    }
+    return form::interpolate(fe, loc, model_->displacement())(component);
+}
+
+
+Foam::scalar Foam::solidRegion::reaction
+(
+    const word& patch,
+    label component,
+    const dictionary& dict
+) const
+{
+    const auto iter = feMesh_->feMesh().nodeSets.find(patch);
+    if (iter == feMesh_->feMesh().nodeSets.end())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown patch '" << patch << "' in " << dict.name()
+            << " (solid region '" << name_ << "')" << nl << "    Patches: "
+            << mesh_->boundaryMesh().names()
+            << exit(FatalIOError);
+    }
+    return model_->reaction(iter->second)(component);
+}
