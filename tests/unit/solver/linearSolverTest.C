@@ -1,0 +1,186 @@
+// Unit tests of form::linearSolver: cholmod, umfpack and sparseLU against a
+// dense LU solve of the same system.
+#include "linearSolver.H"
+#include "cholmodSolver.H"
+#include "umfpackSolver.H"
+#include "formError.H"
+#include <gtest/gtest.h>
+#include <vector>
+
+using namespace form;
+
+namespace
+{
+
+// 5-point Laplacian on an n x n grid (SPD), plus shift*I, plus an
+// unsymmetric convection term c (u_{i+1} - u_{i-1}) along x
+sparseMatrix gridMatrix(int n, double shift, double c)
+{
+    std::vector<Eigen::Triplet<double>> t;
+    auto id = [n](int i, int j) { return i + n*j; };
+    for (int j = 0; j < n; ++j)
+    {
+        for (int i = 0; i < n; ++i)
+        {
+            const int k = id(i, j);
+            t.emplace_back(k, k, 4.0 + shift);
+            if (i > 0) t.emplace_back(k, id(i - 1, j), -1.0 - c);
+            if (i < n - 1) t.emplace_back(k, id(i + 1, j), -1.0 + c);
+            if (j > 0) t.emplace_back(k, id(i, j - 1), -1.0);
+            if (j < n - 1) t.emplace_back(k, id(i, j + 1), -1.0);
+        }
+    }
+    sparseMatrix K(n*n, n*n);
+    K.setFromTriplets(t.begin(), t.end());
+    K.makeCompressed();
+    return K;
+}
+
+vecX denseSolve(const sparseMatrix& K, const vecX& r)
+{
+    return matX(K).fullPivLu().solve(r);
+}
+
+vecX rhs(int n)
+{
+    vecX r(n);
+    for (int i = 0; i < n; ++i) r(i) = std::sin(0.37*i) + 0.1*i;
+    return r;
+}
+
+} // namespace
+
+
+TEST(linearSolver, NewListsValidNamesForUnknownSolver)
+{
+    try
+    {
+        linearSolver::New("pardiso");
+        FAIL() << "no exception";
+    }
+    catch (const inputError& e)
+    {
+        EXPECT_EQ(e.entry(), "linearSolver");
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("pardiso"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("valid: cholmod umfpack sparseLU"), std::string::npos)
+            << msg;
+    }
+}
+
+
+TEST(linearSolver, TypesAndSPDFlags)
+{
+    EXPECT_EQ(linearSolver::New("cholmod")->type(), "cholmod");
+    EXPECT_TRUE(linearSolver::New("cholmod")->requiresSPD());
+    EXPECT_EQ(linearSolver::New("umfpack")->type(), "umfpack");
+    EXPECT_FALSE(linearSolver::New("umfpack")->requiresSPD());
+    EXPECT_EQ(linearSolver::New("sparseLU")->type(), "sparseLU");
+    EXPECT_FALSE(linearSolver::New("sparseLU")->requiresSPD());
+}
+
+
+TEST(linearSolver, AllSolversMatchDenseSolveOnSPDSystem)
+{
+    const sparseMatrix K = gridMatrix(12, 0.01, 0);
+    const vecX r = rhs(int(K.rows()));
+    const vecX x = denseSolve(K, r);
+    for (const char* name : {"cholmod", "umfpack", "sparseLU"})
+    {
+        auto s = linearSolver::New(name);
+        s->analyzePattern(K);
+        s->factorize(K);
+        const vecX y = s->solve(r);
+        EXPECT_LT((y - x).norm(), 1e-10*x.norm()) << name;
+
+        // Refactorise with new values on the same pattern
+        sparseMatrix K2 = K;
+        for (int k = 0; k < K2.nonZeros(); ++k) K2.valuePtr()[k] *= 2;
+        s->factorize(K2);
+        EXPECT_LT((s->solve(r) - 0.5*x).norm(), 1e-10*x.norm()) << name;
+    }
+}
+
+
+TEST(linearSolver, LUSolversMatchDenseSolveOnUnsymmetricSystem)
+{
+    const sparseMatrix K = gridMatrix(10, 0.0, 0.4);
+    const vecX r = rhs(int(K.rows()));
+    const vecX x = denseSolve(K, r);
+    ASSERT_GT((matX(K) - matX(K).transpose()).norm(), 1);
+    for (const char* name : {"umfpack", "sparseLU"})
+    {
+        auto s = linearSolver::New(name);
+        s->analyzePattern(K);
+        s->factorize(K);
+        EXPECT_LT((s->solve(r) - x).norm(), 1e-10*x.norm()) << name;
+    }
+}
+
+
+TEST(linearSolver, CholmodThrowsOnIndefiniteMatrix)
+{
+    // Laplacian eigenvalues lie in (0, 8): a shift of -2.1 makes it indefinite (and non-singular)
+    const sparseMatrix K = gridMatrix(8, -2.1, 0);
+    auto s = linearSolver::New("cholmod");
+    s->analyzePattern(K);
+    try
+    {
+        s->factorize(K);
+        FAIL() << "no exception";
+    }
+    catch (const numericalError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("not positive definite"),
+            std::string::npos) << e.what();
+    }
+    EXPECT_THROW(s->solve(rhs(int(K.rows()))), numericalError);
+
+    // umfpack solves the same (non-singular) indefinite system
+    const vecX r = rhs(int(K.rows()));
+    auto u = linearSolver::New("umfpack");
+    u->factorize(K);
+    EXPECT_LT((u->solve(r) - denseSolve(K, r)).norm(),
+        1e-8*denseSolve(K, r).norm());
+}
+
+
+TEST(linearSolver, LUSolversThrowOnSingularMatrix)
+{
+    sparseMatrix K = gridMatrix(6, 0, 0);
+    // Zero a whole row and column: structurally singular
+    for (int k = 0; k < K.outerSize(); ++k)
+    {
+        for (sparseMatrix::InnerIterator it(K, k); it; ++it)
+        {
+            if (it.row() == 7 || it.col() == 7) it.valueRef() = 0;
+        }
+    }
+    for (const char* name : {"umfpack", "sparseLU", "cholmod"})
+    {
+        auto s = linearSolver::New(name);
+        s->analyzePattern(K);
+        EXPECT_THROW(s->factorize(K), numericalError) << name;
+    }
+}
+
+
+TEST(linearSolver, MetisOrderingAndFactorMemory)
+{
+    const sparseMatrix K = gridMatrix(30, 0.01, 0);
+    cholmodSolver c;
+    c.analyzePattern(K);
+    c.factorize(K);
+    EXPECT_TRUE(c.usedMetis());
+    // nnz(L) of a 900-dof 2D grid lies between nnz(tril K) and dense
+    const double nnzLower = (K.nonZeros() + K.rows())/2.0;
+    EXPECT_GT(c.factorMemory(), nnzLower*sizeof(double));
+    EXPECT_LT(c.factorMemory(), 0.5*K.rows()*K.rows()*sizeof(double));
+
+    umfpackSolver u;
+    u.analyzePattern(K);
+    u.factorize(K);
+    EXPECT_TRUE(u.usedMetis());
+    EXPECT_GT(u.factorMemory(), K.nonZeros()*sizeof(double));
+    EXPECT_LT(u.factorMemory(), double(K.rows())*K.rows()*sizeof(double));
+}
