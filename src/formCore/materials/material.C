@@ -1,1 +1,155 @@
-// placeholder: to be implemented
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Run-time selection, parameter checking and the default equivalent strain
+    of form::material (see material.H).
+\*---------------------------------------------------------------------------*/
+#include "material.H"
+#include "formError.H"
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace form
+{
+
+namespace
+{
+std::string formatNumber(double v)
+{
+    std::ostringstream os;
+    os.precision(12);
+    os << v;
+    return os.str();
+}
+} // anonymous namespace
+
+
+void parameterSpec::check(double value) const
+{
+    const bool belowMin = minInclusive ? value < min : value <= min;
+    const bool aboveMax = maxInclusive ? value > max : value >= max;
+    if (std::isnan(value) || belowMin || aboveMax)
+    {
+        throw inputError
+        (
+            name,
+            "parameter '" + name + "' = " + formatNumber(value)
+          + " is out of range " + (minInclusive ? "[" : "(")
+          + formatNumber(min) + ", " + formatNumber(max)
+          + (maxInclusive ? "]" : ")")
+          + (description.empty() ? "" : " (" + description + ")")
+        );
+    }
+}
+
+
+double checkedParameter(const parameterMap& p, const parameterSpec& spec)
+{
+    const auto it = p.find(spec.name);
+    if (it == p.end())
+    {
+        throw inputError
+        (
+            spec.name,
+            "missing parameter '" + spec.name + "'"
+          + (spec.description.empty() ? "" : " (" + spec.description + ")")
+        );
+    }
+    spec.check(it->second);
+    return it->second;
+}
+
+
+double checkedParameter
+(
+    const parameterMap& p,
+    const std::vector<parameterSpec>& specs,
+    const std::string& name
+)
+{
+    for (const auto& s : specs)
+    {
+        if (s.name == name) return checkedParameter(p, s);
+    }
+    throw inputError(name, "no parameter '" + name + "' is declared");
+}
+
+
+std::map<std::string, material::registryEntry>& material::registry()
+{
+    // Function-local static: safe against static-initialisation order of
+    // the addMaterialToRegistry objects in other translation units
+    static std::map<std::string, registryEntry> table;
+    return table;
+}
+
+
+std::string material::validTypes()
+{
+    std::string names;
+    for (const auto& entry : registry())
+    {
+        names += (names.empty() ? "" : " ") + entry.first;
+    }
+    return names;
+}
+
+
+std::unique_ptr<material> material::New
+(
+    const std::string& type,
+    const parameterMap& parameters
+)
+{
+    const auto it = registry().find(type);
+    if (it == registry().end())
+    {
+        throw inputError
+        (
+            "type",
+            "unknown material type '" + type + "'; valid: " + validTypes()
+        );
+    }
+    for (const auto& spec : it->second.parameters)
+    {
+        checkedParameter(parameters, spec);
+    }
+    return it->second.factory(parameters);
+}
+
+
+materialState material::initialState() const
+{
+    materialState s;
+    s.history = vecX::Zero(nHistory());
+    return s;
+}
+
+
+double material::equivalentStrain
+(
+    const mat3& F,
+    const materialState&
+) const
+{
+    // Logarithmic (Hencky) strain e = 1/2 ln(F F^T), or eps = sym(F - I)
+    // for small-strain models; von Mises equivalent sqrt(2/3 e':e')
+    mat3 e;
+    if (geometricallyLinear())
+    {
+        e = 0.5*(F + F.transpose()) - mat3::Identity();
+    }
+    else
+    {
+        Eigen::SelfAdjointEigenSolver<mat3> eig(F*F.transpose());
+        const vec3 lnLambda = 0.5*eig.eigenvalues().array().log().matrix();
+        e = eig.eigenvectors()*lnLambda.asDiagonal()
+           *eig.eigenvectors().transpose();
+    }
+    const mat3 eDev = e - e.trace()/3.0*mat3::Identity();
+    return std::sqrt(2.0/3.0*eDev.cwiseProduct(eDev).sum());
+}
+
+} // namespace form

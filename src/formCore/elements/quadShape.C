@@ -1,0 +1,88 @@
+#include "quadShape.H"
+#include <stdexcept>
+
+namespace form
+{
+
+namespace
+{
+// Natural coordinates of the VTK biquadratic quad; the first four are the
+// corners of the bilinear quad
+constexpr double rNode[9] = {-1, 1, 1, -1, 0, 1, 0, -1, 0};
+constexpr double sNode[9] = {-1, -1, 1, 1, -1, 0, 1, 0, 0};
+
+// Quadratic Lagrange polynomial through -1, 0, 1 that is 1 at xiNode
+inline void lagrange3(double xiNode, double x, double& l, double& dl)
+{
+    if (xiNode < -0.5)      { l = 0.5*x*(x - 1); dl = x - 0.5; }
+    else if (xiNode > 0.5)  { l = 0.5*x*(x + 1); dl = x + 0.5; }
+    else                    { l = 1 - x*x;       dl = -2*x; }
+}
+} // anonymous namespace
+
+
+template<int NN>
+double quadShape<NN>::nodeR(int a) { return rNode[a]; }
+
+template<int NN>
+double quadShape<NN>::nodeS(int a) { return sNode[a]; }
+
+
+template<>
+void quadShape<4>::eval(double r, double s, vecN& N, matN2& dN)
+{
+    for (int a = 0; a < 4; ++a)
+    {
+        const double ra = rNode[a], sa = sNode[a];
+        N(a) = 0.25*(1 + ra*r)*(1 + sa*s);
+        dN(a, 0) = 0.25*ra*(1 + sa*s);
+        dN(a, 1) = 0.25*sa*(1 + ra*r);
+    }
+}
+
+
+template<>
+void quadShape<9>::eval(double r, double s, vecN& N, matN2& dN)
+{
+    for (int a = 0; a < 9; ++a)
+    {
+        double lr, dlr, ls, dls;
+        lagrange3(rNode[a], r, lr, dlr);
+        lagrange3(sNode[a], s, ls, dls);
+        N(a) = lr*ls;
+        dN(a, 0) = dlr*ls;
+        dN(a, 1) = lr*dls;
+    }
+}
+
+
+template struct quadShape<4>;
+template struct quadShape<9>;
+
+
+void lineShape(int n, double xi, vecX& N, vecX& dN)
+{
+    N.resize(n);
+    dN.resize(n);
+    if (n == 2)
+    {
+        N << 0.5*(1 - xi), 0.5*(1 + xi);
+        dN << -0.5, 0.5;
+    }
+    else if (n == 3)
+    {
+        // start (-1), end (+1), middle (0)
+        lagrange3(-1, xi, N(0), dN(0));
+        lagrange3(1, xi, N(1), dN(1));
+        lagrange3(0, xi, N(2), dN(2));
+    }
+    else
+    {
+        throw std::invalid_argument
+        (
+            "lineShape: " + std::to_string(n) + "-node edge; expected 2 or 3"
+        );
+    }
+}
+
+} // namespace form
