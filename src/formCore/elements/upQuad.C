@@ -1,1 +1,326 @@
-// placeholder: to be implemented
+#include "upQuad.H"
+#include "quadShape.H"
+#include "formError.H"
+#include <cmath>
+#include <sstream>
+
+namespace form
+{
+
+namespace
+{
+const double twoPi = 2*M_PI;
+
+std::string num(double v)
+{
+    std::ostringstream os;
+    os.precision(6);
+    os << v;
+    return os.str();
+}
+} // anonymous namespace
+
+
+template<int NN, int NP>
+upQuad<NN, NP>::upQuad
+(
+    const std::string& name,
+    int nGauss,
+    analysisType analysis
+)
+:
+    name_(name),
+    analysis_(analysis),
+    nGauss_(nGauss),
+    qp_(gaussLegendreQuad(nGauss))
+{
+    if (analysis == analysisType::solid3D)
+    {
+        throw inputError
+        (
+            "analysisType",
+            "element type '" + name + "' supports planeStrain and"
+            " axisymmetric, not solid3D"
+        );
+    }
+}
+
+
+template<int NN, int NP>
+std::vector<int> upQuad<NN, NP>::edgeNodes(int edge) const
+{
+    // Edge k runs from corner k to corner k+1 (counter-clockwise)
+    std::vector<int> nodes{edge, (edge + 1) % 4};
+    if (NN == 9) nodes.push_back(4 + edge);
+    return nodes;
+}
+
+
+template<int NN, int NP>
+typename upQuad<NN, NP>::pointGeometry upQuad<NN, NP>::geometry
+(
+    const matX& X,
+    const quadraturePoint2D& q,
+    int elementId
+) const
+{
+    pointGeometry g;
+    matN2 dNdr;
+    quadShape<NN>::eval(q.r, q.s, g.N, dNdr);
+
+    // J0(i, j) = dX_i/dr_j; dN/dX = dN/dr J0^-1 (Bathe FEP eq. 5.25)
+    const Eigen::Matrix2d J0 = X.topRows<NN>().transpose()*dNdr;
+    const double detJ0 = J0.determinant();
+    if (!(detJ0 > 0))
+    {
+        throw numericalError
+        (
+            "element " + std::to_string(elementId) + " (" + name_
+          + "): reference Jacobian det J0 = " + num(detJ0)
+          + " <= 0; the mesh cell is inverted or degenerate"
+        );
+    }
+    g.dNdX = dNdr*J0.inverse();
+    g.R = g.N.dot(X.col(0).head<NN>());
+    g.dV = q.w*detJ0;
+    if (analysis_ == analysisType::axisymmetric)
+    {
+        if (!(g.R > 0))
+        {
+            throw numericalError
+            (
+                "element " + std::to_string(elementId)
+              + ": quadrature point at radius R = " + num(g.R)
+              + " <= 0 in an axisymmetric model (x is the radius)"
+            );
+        }
+        g.dV *= twoPi*g.R;
+    }
+    return g;
+}
+
+
+template<int NN, int NP>
+typename upQuad<NN, NP>::vecP upQuad<NN, NP>::pressureShape
+(
+    double r,
+    double s
+)
+{
+    vecP Np;
+    if constexpr (NP == 3) Np << 1, r, s;
+    else Np.setOnes();
+    return Np;
+}
+
+
+template<int NN, int NP>
+void upQuad<NN, NP>::kinematics
+(
+    const matX& X,
+    const matX& u,
+    bool linear,
+    double kappa,
+    int elementId,
+    elementKinematics& k
+) const
+{
+    const bool axi = analysis_ == analysisType::axisymmetric;
+    const Eigen::Matrix<double, NN, 2> uN = u.topRows<NN>();
+    for (std::size_t q = 0; q < qp_.size(); ++q)
+    {
+        pointKinematics& pk = k.pt[q];
+        pk.g = geometry(X, qp_[q], elementId);
+        pk.Np = pressureShape(qp_[q].r, qp_[q].s);
+
+        // F = I + Grad u; plane strain F_zz = 1, axisymmetric 1 + u_r/R
+        const Eigen::Matrix2d F2 =
+            Eigen::Matrix2d::Identity() + uN.transpose()*pk.g.dNdX;
+        const double ur = pk.g.N.dot(uN.col(0));
+        pk.F.setIdentity();
+        pk.F.template topLeftCorner<2, 2>() = F2;
+        if (axi) pk.F(2, 2) = 1 + ur/pk.g.R;
+        pk.J = pk.F.determinant();
+
+        if (linear)
+        {
+            pk.dNdx = pk.g.dNdX;
+            pk.r = pk.g.R;
+            pk.lnJ = pk.F.trace() - 3;    // tr(eps)
+        }
+        else
+        {
+            if (!(pk.J > 0))
+            {
+                throw inversionError
+                (
+                    elementId,
+                    "element " + std::to_string(elementId) + " (" + name_
+                  + "): det F = " + num(pk.J) + " <= 0 at quadrature point "
+                  + std::to_string(q)
+                );
+            }
+            pk.dNdx = pk.g.dNdX*F2.inverse();   // dN/dx = dN/dX F^-1
+            pk.r = pk.g.R + ur;
+            pk.lnJ = std::log(pk.J);
+        }
+
+        pk.B.setZero();
+        for (int a = 0; a < NN; ++a)
+        {
+            pk.B(0, 2*a) = pk.dNdx(a, 0);
+            pk.B(1, 2*a + 1) = pk.dNdx(a, 1);
+            if (axi) pk.B(2, 2*a) = pk.g.N(a)/pk.r;
+            pk.B(3, 2*a) = pk.dNdx(a, 1);
+            pk.B(3, 2*a + 1) = pk.dNdx(a, 0);
+        }
+    }
+
+    if constexpr (NP > 0)
+    {
+        // L2 projection of kappa ln J onto the pressure space (material.H)
+        vecP rhs = vecP::Zero();
+        for (std::size_t q = 0; q < qp_.size(); ++q)
+        {
+            const pointKinematics& pk = k.pt[q];
+            const Eigen::Matrix<double, 1, nDof> div = pk.B.template topRows<3>().colwise().sum();
+            k.Mp += pk.Np*pk.Np.transpose()*pk.g.dV;
+            rhs += pk.Np*(pk.lnJ*pk.g.dV);
+            k.Kpu += pk.Np*div*pk.g.dV;
+        }
+        k.pe = kappa*k.Mp.ldlt().solve(rhs);
+    }
+}
+
+
+template<int NN, int NP>
+bool upQuad<NN, NP>::compute
+(
+    const matX& X,
+    const matX& u,
+    const material& mat,
+    const std::vector<materialState>& committed,
+    std::vector<materialState>& trial,
+    vecX& fint,
+    matX* K,
+    int elementId
+) const
+{
+    const int nQ = nQuadrature();
+    if (int(committed.size()) != nQ)
+    {
+        throw numericalError
+        (
+            "element " + std::to_string(elementId) + " (" + name_ + "): "
+          + std::to_string(committed.size()) + " material states given, "
+          + std::to_string(nQ) + " expected"
+        );
+    }
+    trial.resize(nQ);
+
+    const bool linear = mat.geometricallyLinear();
+    const bool axi = analysis_ == analysisType::axisymmetric;
+    const double kappa = mat.bulkModulus();
+    elementKinematics k;
+    kinematics(X, u, linear, kappa, elementId, k);
+
+    // Voigt rows (xx, yy, zz, xy): 1 = m, I_sym = diag(1, 1, 1, 1/2)
+    const Eigen::Vector4d m(1, 1, 1, 0);
+    const Eigen::Vector4d iSym(1, 1, 1, 0.5);
+
+    Eigen::Matrix<double, nDof, 1> f = Eigen::Matrix<double, nDof, 1>::Zero();
+    Eigen::Matrix<double, nDof, nDof> Kt =
+        Eigen::Matrix<double, nDof, nDof>::Zero();
+
+    for (int q = 0; q < nQ; ++q)
+    {
+        const pointKinematics& pk = k.pt[q];
+        mat3 tauDev;
+        mat6 cDev;
+        if (!mat.deviatoric(pk.F, committed[q], trial[q], tauDev, cDev))
+        {
+            return false;
+        }
+        const double p = pressure(k, q, kappa);
+        const mat3 tau = tauDev + p*mat3::Identity();
+        const Eigen::Vector4d tauV(tau(0, 0), tau(1, 1), tau(2, 2), tau(0, 1));
+        const double dV = pk.g.dV;
+
+        f += pk.B.transpose()*tauV*dV;
+        if (!K) continue;
+
+        Eigen::Matrix4d c = cDev.topLeftCorner<4, 4>();
+        if (NP == 0) c += kappa*m*m.transpose();
+        if (!linear) c.diagonal() -= 2*p*iSym;
+        Kt += pk.B.transpose()*c*pk.B*dV;
+
+        if (!linear)
+        {
+            // Geometric stiffness G^T (tau (x) I) G: in-plane gradients and,
+            // axisymmetric, the hoop term tau_zz N_a N_b / r^2
+            const matN2& g = pk.dNdx;
+            const Eigen::Matrix<double, NN, NN> kg =
+                g*tau.topLeftCorner<2, 2>()*g.transpose()*dV;
+            for (int a = 0; a < NN; ++a)
+            {
+                for (int b = 0; b < NN; ++b)
+                {
+                    Kt(2*a, 2*b) += kg(a, b);
+                    Kt(2*a + 1, 2*b + 1) += kg(a, b);
+                }
+            }
+            if (axi)
+            {
+                const vecN Nr = pk.g.N/pk.r;
+                const Eigen::Matrix<double, NN, NN> kh =
+                    tau(2, 2)*Nr*Nr.transpose()*dV;
+                for (int a = 0; a < NN; ++a)
+                {
+                    for (int b = 0; b < NN; ++b) Kt(2*a, 2*b) += kh(a, b);
+                }
+            }
+        }
+    }
+
+    fint = f;
+    if (K)
+    {
+        if constexpr (NP > 0)
+        {
+            // Static condensation of p_e (solidElement.H)
+            Kt += kappa*k.Kpu.transpose()*k.Mp.ldlt().solve(k.Kpu);
+        }
+        *K = Kt;
+    }
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * Instantiation  * * * * * * * * * * * * * * * //
+
+template class upQuad<4, 0>;
+template class upQuad<9, 0>;
+template class upQuad<4, 1>;
+template class upQuad<9, 3>;
+
+namespace
+{
+template<int NN, int NP>
+bool addQuad(const std::string& name, int nGauss)
+{
+    solidElement::registry()[name] = [name, nGauss](analysisType a)
+        -> std::unique_ptr<solidElement>
+    {
+        return std::make_unique<upQuad<NN, NP>>(name, nGauss, a);
+    };
+    return true;
+}
+
+const bool quadsAdded =
+    addQuad<4, 0>("Q4", 2)
+ && addQuad<9, 0>("Q9", 3)
+ && addQuad<4, 1>("Q4P1", 2)
+ && addQuad<9, 3>("Q9P3", 3);
+} // anonymous namespace
+
+} // namespace form

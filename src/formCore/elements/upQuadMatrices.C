@@ -1,0 +1,157 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    upQuad: mass matrix, inf-sup test matrices and averaged results (the
+    internal force and tangent are in upQuad.C).
+\*---------------------------------------------------------------------------*/
+#include "upQuad.H"
+#include "formError.H"
+
+namespace form
+{
+
+template<int NN, int NP>
+matX upQuad<NN, NP>::massMatrix(const matX& X) const
+{
+    // One more point per direction than the stiffness rule: exact for
+    // N_a N_b on parallelograms also with the 2 pi R factor
+    matX M = matX::Zero(nDof, nDof);
+    for (const quadraturePoint2D& q : gaussLegendreQuad(nGauss_ + 1))
+    {
+        const pointGeometry g = geometry(X, q, -1);
+        const Eigen::Matrix<double, NN, NN> mq = g.N*g.N.transpose()*g.dV;
+        for (int a = 0; a < NN; ++a)
+        {
+            for (int b = 0; b < NN; ++b)
+            {
+                M(2*a, 2*b) += mq(a, b);
+                M(2*a + 1, 2*b + 1) += mq(a, b);
+            }
+        }
+    }
+    return M;
+}
+
+
+template<int NN, int NP>
+infSupMatrices upQuad<NN, NP>::infSup(const matX& X) const
+{
+    const bool axi = analysis_ == analysisType::axisymmetric;
+    infSupMatrices s;
+    s.Kpu = matX::Zero(NP, nDof);
+    s.Mp = matX::Zero(NP, NP);
+    s.T = matX::Zero(nDof, nDof);
+    for (const quadraturePoint2D& q : qp_)
+    {
+        const pointGeometry g = geometry(X, q, -1);
+        const double dV = g.dV;
+
+        // H1: grad u : grad u + u . u (+ (u_r/R)^2, the hoop gradient)
+        const Eigen::Matrix<double, NN, NN> t =
+            (g.dNdX*g.dNdX.transpose() + g.N*g.N.transpose())*dV;
+        Eigen::Matrix<double, 1, nDof> div;
+        for (int a = 0; a < NN; ++a)
+        {
+            div(2*a) = g.dNdX(a, 0) + (axi ? g.N(a)/g.R : 0.0);
+            div(2*a + 1) = g.dNdX(a, 1);
+            for (int b = 0; b < NN; ++b)
+            {
+                s.T(2*a, 2*b) += t(a, b)
+                  + (axi ? g.N(a)*g.N(b)/(g.R*g.R)*dV : 0.0);
+                s.T(2*a + 1, 2*b + 1) += t(a, b);
+            }
+        }
+        if constexpr (NP > 0)
+        {
+            const vecP Np = pressureShape(q.r, q.s);
+            s.Kpu += Np*div*dV;
+            s.Mp += Np*Np.transpose()*dV;
+        }
+    }
+    return s;
+}
+
+
+template<int NN, int NP>
+elementResult upQuad<NN, NP>::result
+(
+    const matX& X,
+    const matX& u,
+    const material& mat,
+    const std::vector<materialState>& states
+) const
+{
+    const int nQ = nQuadrature();
+    if (int(states.size()) != nQ)
+    {
+        throw numericalError
+        (
+            name_ + " result: " + std::to_string(states.size())
+          + " material states given, " + std::to_string(nQ) + " expected"
+        );
+    }
+    const bool linear = mat.geometricallyLinear();
+    const double kappa = mat.bulkModulus();
+    elementKinematics k;
+    kinematics(X, u, linear, kappa, -1, k);
+
+    // Averages weighted by the reference volume of each point
+    elementResult res;
+    res.minDetF = k.pt[0].J;
+    double volume = 0;
+    for (int q = 0; q < nQ; ++q)
+    {
+        const pointKinematics& pk = k.pt[q];
+        mat3 tauDev;
+        mat6 cDev;
+        materialState trial;
+        if (!mat.deviatoric(pk.F, states[q], trial, tauDev, cDev))
+        {
+            throw numericalError
+            (
+                name_ + " result: material update failed at point "
+              + std::to_string(q)
+            );
+        }
+        const double p = pressure(k, q, kappa);
+        const double J = linear ? 1.0 : pk.J;
+        const double dV = pk.g.dV;
+        res.cauchy += (tauDev + p*mat3::Identity())/J*dV;
+        res.pressure += -p/J*dV;
+        res.equivalentStrain += mat.equivalentStrain(pk.F, states[q])*dV;
+        res.minDetF = std::min(res.minDetF, pk.J);
+        volume += dV;
+    }
+    res.cauchy /= volume;
+    res.pressure /= volume;
+    res.equivalentStrain /= volume;
+    return res;
+}
+
+
+// * * * * * * * * * * * * * * Instantiation  * * * * * * * * * * * * * * * //
+
+// Members defined in this file, for the four registered element types
+template matX upQuad<4, 0>::massMatrix(const matX&) const;
+template infSupMatrices upQuad<4, 0>::infSup(const matX&) const;
+template elementResult upQuad<4, 0>::result
+(const matX&, const matX&, const material&, const std::vector<materialState>&)
+const;
+template matX upQuad<9, 0>::massMatrix(const matX&) const;
+template infSupMatrices upQuad<9, 0>::infSup(const matX&) const;
+template elementResult upQuad<9, 0>::result
+(const matX&, const matX&, const material&, const std::vector<materialState>&)
+const;
+template matX upQuad<4, 1>::massMatrix(const matX&) const;
+template infSupMatrices upQuad<4, 1>::infSup(const matX&) const;
+template elementResult upQuad<4, 1>::result
+(const matX&, const matX&, const material&, const std::vector<materialState>&)
+const;
+template matX upQuad<9, 3>::massMatrix(const matX&) const;
+template infSupMatrices upQuad<9, 3>::infSup(const matX&) const;
+template elementResult upQuad<9, 3>::result
+(const matX&, const matX&, const material&, const std::vector<materialState>&)
+const;
+
+} // namespace form
