@@ -1,1 +1,834 @@
-// placeholder: to be implemented
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    solidModel: dof numbering, fixed-pattern assembly, loads, constraints and
+    material-point states (see solidModel.H).
+\*---------------------------------------------------------------------------*/
+#include "solidModel.H"
+#include "sparsityPattern.H"
+#include "formError.H"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+
+namespace form
+{
+
+namespace
+{
+
+double seconds(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - start
+    ).count();
+}
+
+} // namespace
+
+
+struct solidModel::impl
+{
+    feMesh mesh;
+    analysisType analysis;
+    std::map<std::string, std::shared_ptr<material>> materials;
+    int nDim = 2;
+
+    struct blockData
+    {
+        std::unique_ptr<solidElement> kernel;
+        std::shared_ptr<material> mat;
+        int firstElement = 0;
+    };
+    std::vector<blockData> blocks;
+
+    //- Global element -> block and element within the block
+    std::vector<int> elemBlock;
+    std::vector<int> elemLocal;
+
+    //- Material-point states per element and quadrature point
+    std::vector<std::vector<materialState>> committed;
+    std::vector<std::vector<materialState>> trial;
+
+    vecX U;
+    vecX Ucommitted;
+
+    //- Constrained dof -> value(t) (null: zero)
+    std::map<int, timeFunction> constraints;
+    //- Dofs of nodes that belong to no element (held at zero)
+    std::vector<bool> orphan;
+
+    //- A load on one boundary face, with the face nodes located in the
+    //  owning element (for the scatter of the follower-load stiffness)
+    struct faceRef
+    {
+        int element = 0;
+        std::vector<int> nodes;
+        std::vector<int> localNodes;
+    };
+    struct tractionLoad
+    {
+        std::string faceSet;
+        vectorTimeFunction t;
+        std::vector<faceRef> faces;
+    };
+    struct pressureLoad
+    {
+        std::string faceSet;
+        timeFunction p;
+        std::vector<faceRef> faces;
+    };
+    std::vector<tractionLoad> tractions;
+    std::vector<pressureLoad> pressures;
+
+    bool finalised = false;
+    int revision = 0;
+    dofNumbering numbering;
+    sparsityPattern pattern;
+    sparseMatrix Kff;
+    sparseMatrix Kfp;
+
+    //- Internal and external nodal forces at the last evaluate (all dofs)
+    vecX fint;
+    vecX fext;
+
+    phaseTimes times;
+
+    int nDofs() const { return mesh.nNodes()*nDim; }
+
+    void requireFinalised(const char* what) const
+    {
+        if (!finalised)
+        {
+            throw numericalError
+            (
+                std::string("solidModel::") + what
+              + ": finalise() has not been called"
+            );
+        }
+    }
+
+    const std::vector<feFace>& faceSet(const std::string& name) const
+    {
+        auto it = mesh.faceSets.find(name);
+        if (it == mesh.faceSets.end())
+        {
+            std::string valid;
+            for (const auto& s : mesh.faceSets) valid += " " + s.first;
+            throw inputError
+            (
+                name,
+                "unknown face set '" + name + "'; valid:" + valid
+            );
+        }
+        return it->second;
+    }
+
+    std::vector<faceRef> locateFaces(const std::string& name) const;
+
+    //- Gather X and u (nNodes x nDim) of one element
+    void gather(int e, matX& X, matX& u) const
+    {
+        const elementBlock& b = mesh.blocks[elemBlock[e]];
+        const int* nodes = b.nodes(elemLocal[e]);
+        const int n = b.nodesPerElement;
+        X.resize(n, nDim);
+        u.resize(n, nDim);
+        for (int a = 0; a < n; ++a)
+        {
+            for (int i = 0; i < nDim; ++i)
+            {
+                X(a, i) = mesh.X(nodes[a], i);
+                u(a, i) = U(nodes[a]*nDim + i);
+            }
+        }
+    }
+
+    void gatherFace(const faceRef& f, matX& X, matX& u) const
+    {
+        const int n = int(f.nodes.size());
+        X.resize(n, nDim);
+        u.resize(n, nDim);
+        for (int a = 0; a < n; ++a)
+        {
+            for (int i = 0; i < nDim; ++i)
+            {
+                X(a, i) = mesh.X(f.nodes[a], i);
+                u(a, i) = U(f.nodes[a]*nDim + i);
+            }
+        }
+    }
+
+    void build();
+    void assembleExternal(double t, bool wantTangent);
+};
+
+
+std::vector<solidModel::impl::faceRef>
+solidModel::impl::locateFaces(const std::string& name) const
+{
+    std::vector<faceRef> refs;
+    for (const feFace& f : faceSet(name))
+    {
+        if (f.block < 0 || f.block >= int(mesh.blocks.size())
+         || f.element < 0 || f.element >= mesh.blocks[f.block].nElements())
+        {
+            throw inputError
+            (
+                name,
+                "face set '" + name + "' refers to a non-existent element"
+            );
+        }
+        const elementBlock& b = mesh.blocks[f.block];
+        const int* nodes = b.nodes(f.element);
+        faceRef r;
+        r.element = blocks[f.block].firstElement + f.element;
+        r.nodes = f.nodes;
+        for (int node : f.nodes)
+        {
+            const int* it = std::find(nodes, nodes + b.nodesPerElement, node);
+            if (it == nodes + b.nodesPerElement)
+            {
+                throw inputError
+                (
+                    name,
+                    "face set '" + name + "': node " + std::to_string(node)
+                  + " is not a node of its element "
+                  + std::to_string(f.element) + " in block '" + b.name + "'"
+                );
+            }
+            r.localNodes.push_back(int(it - nodes));
+        }
+        refs.push_back(std::move(r));
+    }
+    return refs;
+}
+
+
+void solidModel::impl::build()
+{
+    const int n = nDofs();
+    std::vector<bool> constrained(orphan);
+    for (const auto& c : constraints) constrained[c.first] = true;
+    numbering.build(constrained);
+
+    std::vector<std::size_t> offsets(1, 0);
+    std::vector<int> dofs;
+    for (std::size_t e = 0; e < elemBlock.size(); ++e)
+    {
+        const elementBlock& b = mesh.blocks[elemBlock[e]];
+        const int* nodes = b.nodes(elemLocal[e]);
+        for (int a = 0; a < b.nodesPerElement; ++a)
+        {
+            for (int i = 0; i < nDim; ++i) dofs.push_back(nodes[a]*nDim + i);
+        }
+        offsets.push_back(dofs.size());
+    }
+    pattern.build(numbering, offsets, dofs, Kff, Kfp);
+
+    for (auto& l : tractions) l.faces = locateFaces(l.faceSet);
+    for (auto& l : pressures) l.faces = locateFaces(l.faceSet);
+
+    fint = vecX::Zero(n);
+    fext = vecX::Zero(n);
+    finalised = true;
+    ++revision;
+}
+
+
+// Dead tractions and follower pressures: f_ext, and for follower loads the
+// load stiffness K_L = -d f_ext / d u added to K (Simo & Hughes 1998 ch. 9;
+// it is unsymmetric unless the loaded boundary is closed). Edge nodes are
+// nodes of the owning element, so K_L scatters through the element's map.
+void solidModel::impl::assembleExternal(double t, bool wantTangent)
+{
+    matX X, u, K;
+    vecX f;
+    for (const auto& l : tractions)
+    {
+        const Eigen::Vector2d tv = l.t(t);
+        for (const faceRef& face : l.faces)
+        {
+            gatherFace(face, X, u);
+            f = edgeLoad::deadTraction(X, tv, analysis);
+            for (std::size_t a = 0; a < face.nodes.size(); ++a)
+            {
+                for (int i = 0; i < nDim; ++i)
+                {
+                    fext(face.nodes[a]*nDim + i) += f(a*nDim + i);
+                }
+            }
+        }
+    }
+
+    double* ff = Kff.valuePtr();
+    double* fp = Kfp.valuePtr();
+    for (const auto& l : pressures)
+    {
+        const double p = l.p(t);
+        for (const faceRef& face : l.faces)
+        {
+            gatherFace(face, X, u);
+            edgeLoad::followerPressure
+            (
+                X, u, p, analysis, f, wantTangent ? &K : nullptr
+            );
+            const int nf = int(face.nodes.size());
+            for (int a = 0; a < nf; ++a)
+            {
+                for (int i = 0; i < nDim; ++i)
+                {
+                    fext(face.nodes[a]*nDim + i) += f(a*nDim + i);
+                }
+            }
+            if (!wantTangent) continue;
+
+            const int nE = pattern.nElementDofs(face.element);
+            const int* code = pattern.scatter(face.element);
+            for (int b = 0; b < nf; ++b)
+            {
+                for (int j = 0; j < nDim; ++j)
+                {
+                    const int lb = face.localNodes[b]*nDim + j;
+                    for (int a = 0; a < nf; ++a)
+                    {
+                        for (int i = 0; i < nDim; ++i)
+                        {
+                            const int la = face.localNodes[a]*nDim + i;
+                            const int c = code[la + nE*lb];
+                            const double v = K(a*nDim + i, b*nDim + j);
+                            if (c >= 0) ff[c] += v;
+                            else if (c <= -2) fp[-2 - c] += v;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+
+solidModel::solidModel
+(
+    feMesh mesh,
+    analysisType analysis,
+    std::map<std::string, std::shared_ptr<material>> materials
+)
+:
+    impl_(std::make_shared<impl>())
+{
+    impl& m = *impl_;
+    m.mesh = std::move(mesh);
+    m.analysis = analysis;
+    m.materials = std::move(materials);
+    m.nDim = m.mesh.nDim;
+
+    if (m.mesh.X.cols() != m.nDim)
+    {
+        throw inputError
+        (
+            "mesh",
+            "mesh coordinates have " + std::to_string(m.mesh.X.cols())
+          + " columns but nDim = " + std::to_string(m.nDim)
+        );
+    }
+
+    const int nNodes = m.mesh.nNodes();
+    std::vector<bool> used(nNodes, false);
+    for (const elementBlock& b : m.mesh.blocks)
+    {
+        impl::blockData d;
+        d.kernel = solidElement::New(b.elementType, analysis);
+        if (d.kernel->nNodes() != b.nodesPerElement)
+        {
+            throw inputError
+            (
+                "elementType",
+                "block '" + b.name + "': element type " + b.elementType
+              + " has " + std::to_string(d.kernel->nNodes())
+              + " nodes but the block has "
+              + std::to_string(b.nodesPerElement) + " nodes per element"
+            );
+        }
+        if (d.kernel->nDim() != m.nDim)
+        {
+            throw inputError
+            (
+                "elementType",
+                "block '" + b.name + "': element type " + b.elementType
+              + " is " + std::to_string(d.kernel->nDim()) + "D, the mesh "
+              + std::to_string(m.nDim) + "D"
+            );
+        }
+        auto mit = m.materials.find(b.materialName);
+        if (mit == m.materials.end() || !mit->second)
+        {
+            std::string valid;
+            for (const auto& p : m.materials) valid += " " + p.first;
+            throw inputError
+            (
+                "material",
+                "block '" + b.name + "': unknown material '" + b.materialName
+              + "'; defined:" + valid
+            );
+        }
+        d.mat = mit->second;
+        d.firstElement = int(m.elemBlock.size());
+
+        const int blockIndex = int(m.blocks.size());
+        for (int e = 0; e < b.nElements(); ++e)
+        {
+            const int* nodes = b.nodes(e);
+            for (int a = 0; a < b.nodesPerElement; ++a)
+            {
+                if (nodes[a] < 0 || nodes[a] >= nNodes)
+                {
+                    throw inputError
+                    (
+                        "mesh",
+                        "block '" + b.name + "' element " + std::to_string(e)
+                      + " refers to node " + std::to_string(nodes[a])
+                      + " of " + std::to_string(nNodes)
+                    );
+                }
+                used[nodes[a]] = true;
+            }
+            m.elemBlock.push_back(blockIndex);
+            m.elemLocal.push_back(e);
+            m.committed.emplace_back
+            (
+                d.kernel->nQuadrature(), d.mat->initialState()
+            );
+        }
+        m.blocks.push_back(std::move(d));
+    }
+    m.trial = m.committed;
+
+    m.orphan.assign(m.nDofs(), false);
+    for (int node = 0; node < nNodes; ++node)
+    {
+        if (!used[node])
+        {
+            for (int i = 0; i < m.nDim; ++i) m.orphan[node*m.nDim + i] = true;
+        }
+    }
+
+    m.U = vecX::Zero(m.nDofs());
+    m.Ucommitted = m.U;
+}
+
+
+void solidModel::addConstraint
+(
+    const std::vector<int>& nodes,
+    int component,
+    timeFunction value
+)
+{
+    impl& m = *impl_;
+    if (component < 0 || component >= m.nDim)
+    {
+        throw inputError
+        (
+            "component",
+            "constraint component " + std::to_string(component)
+          + " out of range 0.." + std::to_string(m.nDim - 1)
+        );
+    }
+    for (int node : nodes)
+    {
+        if (node < 0 || node >= m.mesh.nNodes())
+        {
+            throw inputError
+            (
+                "nodes",
+                "constraint on non-existent node " + std::to_string(node)
+            );
+        }
+        m.constraints[node*m.nDim + component] = value;
+    }
+    if (m.finalised) m.build();
+}
+
+
+void solidModel::addTraction(const std::string& faceSet, vectorTimeFunction t)
+{
+    impl& m = *impl_;
+    m.faceSet(faceSet);
+    m.tractions.push_back({faceSet, std::move(t), {}});
+    if (m.finalised) m.tractions.back().faces = m.locateFaces(faceSet);
+}
+
+
+void solidModel::addPressure(const std::string& faceSet, timeFunction p)
+{
+    impl& m = *impl_;
+    m.faceSet(faceSet);
+    m.pressures.push_back({faceSet, std::move(p), {}});
+    if (m.finalised) m.pressures.back().faces = m.locateFaces(faceSet);
+}
+
+
+void solidModel::releaseConstraint(const std::vector<int>& nodes, int component)
+{
+    impl& m = *impl_;
+    if (component < 0 || component >= m.nDim)
+    {
+        throw inputError
+        (
+            "component",
+            "released component " + std::to_string(component)
+          + " out of range 0.." + std::to_string(m.nDim - 1)
+        );
+    }
+    for (int node : nodes)
+    {
+        if (node >= 0 && node < m.mesh.nNodes())
+        {
+            m.constraints.erase(node*m.nDim + component);
+        }
+    }
+    if (m.finalised) m.build();
+}
+
+
+void solidModel::finalise()
+{
+    impl_->build();
+}
+
+
+const feMesh& solidModel::mesh() const { return impl_->mesh; }
+analysisType solidModel::analysis() const { return impl_->analysis; }
+int solidModel::nDim() const { return impl_->nDim; }
+int solidModel::nDofs() const { return impl_->nDofs(); }
+
+int solidModel::nFreeDofs() const
+{
+    impl_->requireFinalised("nFreeDofs");
+    return impl_->numbering.nFree();
+}
+
+int solidModel::nPrescribedDofs() const
+{
+    impl_->requireFinalised("nPrescribedDofs");
+    return impl_->numbering.nPrescribed();
+}
+
+bool solidModel::unsymmetric() const { return !impl_->pressures.empty(); }
+
+int solidModel::patternRevision() const { return impl_->revision; }
+
+const std::vector<int>& solidModel::freeDofs() const
+{
+    impl_->requireFinalised("freeDofs");
+    return impl_->numbering.freeDofs;
+}
+
+const std::vector<int>& solidModel::prescribedDofs() const
+{
+    impl_->requireFinalised("prescribedDofs");
+    return impl_->numbering.prescribedDofs;
+}
+
+
+matX solidModel::displacement() const
+{
+    const impl& m = *impl_;
+    matX u(m.mesh.nNodes(), m.nDim);
+    for (int node = 0; node < m.mesh.nNodes(); ++node)
+    {
+        for (int i = 0; i < m.nDim; ++i) u(node, i) = m.U(node*m.nDim + i);
+    }
+    return u;
+}
+
+
+const vecX& solidModel::U() const { return impl_->U; }
+
+
+bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
+{
+    impl& m = *impl_;
+    m.requireFinalised("evaluate");
+    const auto start = std::chrono::steady_clock::now();
+
+    m.fint.setZero(m.nDofs());
+    m.fext.setZero(m.nDofs());
+    if (wantTangent)
+    {
+        std::fill_n(m.Kff.valuePtr(), m.Kff.nonZeros(), 0.0);
+        std::fill_n(m.Kfp.valuePtr(), m.Kfp.nonZeros(), 0.0);
+    }
+
+    const int nElements = int(m.elemBlock.size());
+    double* fint = m.fint.data();
+    double* ff = m.Kff.valuePtr();
+    double* fp = m.Kfp.valuePtr();
+    int materialFailures = 0;
+    bool failed = false;
+    std::exception_ptr error;
+
+    // Independent element evaluations; thread-local buffers, atomic scatter
+    // into the fixed pattern. Exceptions cannot leave a parallel region:
+    // the first one is kept and rethrown after the loop.
+    #pragma omp parallel
+    {
+        matX X, u, Ke;
+        vecX fe;
+        #pragma omp for schedule(dynamic, 32) reduction(+:materialFailures)
+        for (int e = 0; e < nElements; ++e)
+        {
+            bool skip;
+            #pragma omp atomic read
+            skip = failed;
+            if (skip) continue;
+            try
+            {
+                const impl::blockData& b = m.blocks[m.elemBlock[e]];
+                m.gather(e, X, u);
+                const bool ok = b.kernel->compute
+                (
+                    X, u, *b.mat, m.committed[e], m.trial[e], fe,
+                    wantTangent ? &Ke : nullptr, e
+                );
+                if (!ok)
+                {
+                    ++materialFailures;
+                    continue;
+                }
+
+                const elementBlock& blk = m.mesh.blocks[m.elemBlock[e]];
+                const int* nodes = blk.nodes(m.elemLocal[e]);
+                const int nDim = m.nDim;
+                for (int a = 0; a < blk.nodesPerElement; ++a)
+                {
+                    for (int i = 0; i < nDim; ++i)
+                    {
+                        #pragma omp atomic
+                        fint[nodes[a]*nDim + i] += fe(a*nDim + i);
+                    }
+                }
+                if (wantTangent)
+                {
+                    const int n = m.pattern.nElementDofs(e);
+                    const int* code = m.pattern.scatter(e);
+                    const double* k = Ke.data();
+                    for (int ab = 0; ab < n*n; ++ab)
+                    {
+                        const int c = code[ab];
+                        if (c >= 0)
+                        {
+                            #pragma omp atomic
+                            ff[c] += k[ab];
+                        }
+                        else if (c <= -2)
+                        {
+                            #pragma omp atomic
+                            fp[-2 - c] += k[ab];
+                        }
+                    }
+                }
+            }
+            catch (...)
+            {
+                #pragma omp critical(formSolidModelError)
+                {
+                    if (!error) error = std::current_exception();
+                }
+                #pragma omp atomic write
+                failed = true;
+            }
+        }
+    }
+
+    if (error)
+    {
+        m.times.assembly += seconds(start);
+        std::rethrow_exception(error);
+    }
+    if (materialFailures)
+    {
+        m.times.assembly += seconds(start);
+        return false;
+    }
+
+    m.assembleExternal(t, wantTangent);
+
+    const int nFree = m.numbering.nFree();
+    residual.resize(nFree);
+    for (int k = 0; k < nFree; ++k)
+    {
+        const int d = m.numbering.freeDofs[k];
+        residual(k) = m.fext(d) - m.fint(d);
+    }
+    m.times.assembly += seconds(start);
+    return residual.allFinite();
+}
+
+
+const sparseMatrix& solidModel::Kff() const { return impl_->Kff; }
+const sparseMatrix& solidModel::Kfp() const { return impl_->Kfp; }
+
+
+vecX solidModel::prescribedIncrement(double t) const
+{
+    const impl& m = *impl_;
+    m.requireFinalised("prescribedIncrement");
+    const int nP = m.numbering.nPrescribed();
+    vecX dUp(nP);
+    for (int j = 0; j < nP; ++j)
+    {
+        const int d = m.numbering.prescribedDofs[j];
+        auto it = m.constraints.find(d);
+        const double target =
+            (it != m.constraints.end() && it->second) ? it->second(t) : 0.0;
+        dUp(j) = target - m.U(d);
+    }
+    return dUp;
+}
+
+
+void solidModel::applyPrescribed(double t)
+{
+    impl& m = *impl_;
+    const vecX dUp = prescribedIncrement(t);
+    for (int j = 0; j < dUp.size(); ++j)
+    {
+        m.U(m.numbering.prescribedDofs[j]) += dUp(j);
+    }
+}
+
+
+void solidModel::addToFree(const vecX& dUf)
+{
+    impl& m = *impl_;
+    m.requireFinalised("addToFree");
+    if (dUf.size() != m.numbering.nFree())
+    {
+        throw numericalError
+        (
+            "solidModel::addToFree: update has " + std::to_string(dUf.size())
+          + " entries for " + std::to_string(m.numbering.nFree())
+          + " free dofs"
+        );
+    }
+    for (int k = 0; k < dUf.size(); ++k)
+    {
+        m.U(m.numbering.freeDofs[k]) += dUf(k);
+    }
+}
+
+
+void solidModel::setDisplacement(const vecX& U)
+{
+    impl& m = *impl_;
+    if (U.size() != m.nDofs())
+    {
+        throw numericalError
+        (
+            "solidModel::setDisplacement: vector has " + std::to_string(U.size())
+          + " entries for " + std::to_string(m.nDofs()) + " dofs"
+        );
+    }
+    m.U = U;
+}
+
+
+void solidModel::commit()
+{
+    impl& m = *impl_;
+    m.Ucommitted = m.U;
+    m.committed = m.trial;
+}
+
+
+void solidModel::revert()
+{
+    impl& m = *impl_;
+    m.U = m.Ucommitted;
+    m.trial = m.committed;
+}
+
+
+Eigen::Vector3d solidModel::reaction(const std::vector<int>& nodes) const
+{
+    const impl& m = *impl_;
+    Eigen::Vector3d R = Eigen::Vector3d::Zero();
+    if (m.fint.size() != m.nDofs()) return R;
+    for (int node : nodes)
+    {
+        for (int i = 0; i < m.nDim; ++i)
+        {
+            const int d = node*m.nDim + i;
+            R(i) += m.fint(d) - m.fext(d);
+        }
+    }
+    return R;
+}
+
+
+double solidModel::externalForceNorm() const
+{
+    const impl& m = *impl_;
+    if (m.fext.size() != m.nDofs()) return 0;
+    double s = 0;
+    for (int d : m.numbering.freeDofs) s += m.fext(d)*m.fext(d);
+    return std::sqrt(s);
+}
+
+
+double solidModel::reactionNorm() const
+{
+    const impl& m = *impl_;
+    if (m.fint.size() != m.nDofs()) return 0;
+    double s = 0;
+    for (int d : m.numbering.prescribedDofs)
+    {
+        const double r = m.fint(d) - m.fext(d);
+        s += r*r;
+    }
+    return std::sqrt(s);
+}
+
+
+std::vector<elementResult> solidModel::elementResults() const
+{
+    const impl& m = *impl_;
+    const auto start = std::chrono::steady_clock::now();
+    const int nElements = int(m.elemBlock.size());
+    std::vector<elementResult> results(nElements);
+    std::exception_ptr error;
+    #pragma omp parallel
+    {
+        matX X, u;
+        #pragma omp for schedule(static)
+        for (int e = 0; e < nElements; ++e)
+        {
+            try
+            {
+                const impl::blockData& b = m.blocks[m.elemBlock[e]];
+                m.gather(e, X, u);
+                results[e] = b.kernel->result(X, u, *b.mat, m.trial[e]);
+            }
+            catch (...)
+            {
+                #pragma omp critical(formSolidModelError)
+                {
+                    if (!error) error = std::current_exception();
+                }
+            }
+        }
+    }
+    impl_->times.output += seconds(start);
+    if (error) std::rethrow_exception(error);
+    return results;
+}
+
+
+phaseTimes& solidModel::times() { return impl_->times; }
+
+} // namespace form

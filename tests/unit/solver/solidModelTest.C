@@ -1,0 +1,368 @@
+// Unit tests of form::solidModel with the test bar element: assembly into
+// the fixed pattern against a dense reference assembly, tangent against
+// finite differences, constraints, commit/revert, failure reporting.
+#include "solidModel.H"
+#include "testElements.H"
+#include <gtest/gtest.h>
+
+using namespace form;
+using namespace form::test;
+
+namespace
+{
+
+// Braced 3x3 frame: nodes on a unit grid, bars along grid lines and one
+// diagonal per cell; node 9 is an orphan (in no element)
+feMesh frameMesh()
+{
+    matX X(10, 2);
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i)
+            X.row(i + 3*j) << i, j;
+    X.row(9) << 5, 5;
+    std::vector<std::pair<int, int>> bars;
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 2; ++i)
+            bars.push_back({i + 3*j, i + 1 + 3*j});
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 3; ++i)
+            bars.push_back({i + 3*j, i + 3*(j + 1)});
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+            bars.push_back({i + 3*j, i + 1 + 3*(j + 1)});
+    return trussMesh(X, bars);
+}
+
+std::map<std::string, std::shared_ptr<material>> barMaterial
+(
+    double EA = 100, double Fs = 0, double c3 = 0
+)
+{
+    auto m = std::make_shared<trussMaterial>();
+    m->svk = (Fs == 0 && c3 == 0);
+    m->EA = EA;
+    m->Fs = Fs;
+    m->c3 = c3;
+    return {{"bar", m}};
+}
+
+solidModel frameModel()
+{
+    registerTestElements();
+    solidModel model(frameMesh(), analysisType::planeStrain, barMaterial());
+    model.addConstraint({0}, 0);
+    model.addConstraint({0}, 1);
+    model.addConstraint({2}, 1, [](double t) { return 0.1*t; });
+    model.finalise();
+    return model;
+}
+
+vecX someDisplacement(int n)
+{
+    vecX U(n);
+    for (int i = 0; i < n; ++i) U(i) = 0.05*std::sin(1.3*i + 0.4);
+    return U;
+}
+
+// Dense f_int and K over all dofs, element by element
+void denseAssembly
+(
+    const solidModel& model,
+    const material& mat,
+    vecX& fint,
+    matX& K
+)
+{
+    const feMesh& mesh = model.mesh();
+    const int n = model.nDofs();
+    fint = vecX::Zero(n);
+    K = matX::Zero(n, n);
+    testTruss bar;
+    const elementBlock& b = mesh.blocks[0];
+    for (int e = 0; e < b.nElements(); ++e)
+    {
+        const int* nodes = b.nodes(e);
+        matX X(2, 2), u(2, 2);
+        for (int a = 0; a < 2; ++a)
+        {
+            X.row(a) = mesh.X.row(nodes[a]);
+            u(a, 0) = model.U()(2*nodes[a]);
+            u(a, 1) = model.U()(2*nodes[a] + 1);
+        }
+        std::vector<materialState> c(1, mat.initialState()), t = c;
+        vecX fe;
+        matX Ke;
+        ASSERT_TRUE(bar.compute(X, u, mat, c, t, fe, &Ke, e));
+        for (int a = 0; a < 4; ++a)
+        {
+            const int ga = 2*nodes[a/2] + a%2;
+            fint(ga) += fe(a);
+            for (int bb = 0; bb < 4; ++bb)
+            {
+                K(ga, 2*nodes[bb/2] + bb%2) += Ke(a, bb);
+            }
+        }
+    }
+}
+
+} // namespace
+
+
+TEST(solidModel, NumberingSeparatesFreePrescribedAndOrphanDofs)
+{
+    solidModel model = frameModel();
+    EXPECT_EQ(model.nDofs(), 20);
+    // node 0 (2 dofs), node 2 y, orphan node 9 (2 dofs) are not free
+    EXPECT_EQ(model.nPrescribedDofs(), 5);
+    EXPECT_EQ(model.nFreeDofs(), 15);
+    EXPECT_EQ(model.prescribedDofs(), (std::vector<int>{0, 1, 5, 18, 19}));
+    EXPECT_FALSE(model.unsymmetric());
+}
+
+
+TEST(solidModel, AssembledMatricesEqualDenseReferenceAssembly)
+{
+    solidModel model = frameModel();
+    model.setDisplacement(someDisplacement(model.nDofs()));
+    vecX r;
+    ASSERT_TRUE(model.evaluate(0.5, r, true));
+
+    vecX fint;
+    matX K;
+    denseAssembly(model, *barMaterial().at("bar"), fint, K);
+    ASSERT_GT(K.norm(), 100);
+
+    const auto& f = model.freeDofs();
+    const auto& p = model.prescribedDofs();
+    const matX Kff = matX(model.Kff());
+    const matX Kfp = matX(model.Kfp());
+    for (std::size_t i = 0; i < f.size(); ++i)
+    {
+        EXPECT_NEAR(r(i), -fint(f[i]), 1e-12);
+        for (std::size_t j = 0; j < f.size(); ++j)
+        {
+            EXPECT_NEAR(Kff(i, j), K(f[i], f[j]), 1e-12) << i << " " << j;
+        }
+        for (std::size_t j = 0; j < p.size(); ++j)
+        {
+            EXPECT_NEAR(Kfp(i, j), K(f[i], p[j]), 1e-12) << i << " " << j;
+        }
+    }
+}
+
+
+TEST(solidModel, TangentIsTheDerivativeOfMinusTheResidual)
+{
+    auto mats = barMaterial(100, 3, 40);   // S-shaped law, large rotations
+    registerTestElements();
+    solidModel model(frameMesh(), analysisType::planeStrain, mats);
+    model.addConstraint({0, 1}, 0);
+    model.addConstraint({0, 1}, 1);
+    model.finalise();
+    model.setDisplacement(3*someDisplacement(model.nDofs()));
+    vecX r;
+    ASSERT_TRUE(model.evaluate(0, r, true));
+    const matX K = matX(model.Kff());
+    const double h = 1e-6;
+    for (int j = 0; j < model.nFreeDofs(); ++j)
+    {
+        vecX e = vecX::Zero(model.nFreeDofs());
+        e(j) = h;
+        vecX rp, rm;
+        model.addToFree(e);
+        ASSERT_TRUE(model.evaluate(0, rp, false));
+        model.addToFree(-2*e);
+        ASSERT_TRUE(model.evaluate(0, rm, false));
+        model.addToFree(e);
+        const vecX fd = -(rp - rm)/(2*h);
+        EXPECT_LT((fd - K.col(j)).norm(), 1e-6*K.norm()) << "column " << j;
+    }
+}
+
+
+TEST(solidModel, PatternAndValueArraysAreNotRebuiltBetweenEvaluations)
+{
+    solidModel model = frameModel();
+    vecX r;
+    ASSERT_TRUE(model.evaluate(0, r, true));
+    const double* values = model.Kff().valuePtr();
+    const int* inner = model.Kff().innerIndexPtr();
+    const double* fpValues = model.Kfp().valuePtr();
+    const auto nnz = model.Kff().nonZeros();
+    const int revision = model.patternRevision();
+    const matX K0 = matX(model.Kff());
+
+    model.setDisplacement(someDisplacement(model.nDofs()));
+    ASSERT_TRUE(model.evaluate(1, r, true));
+    EXPECT_EQ(model.Kff().valuePtr(), values);
+    EXPECT_EQ(model.Kff().innerIndexPtr(), inner);
+    EXPECT_EQ(model.Kfp().valuePtr(), fpValues);
+    EXPECT_EQ(model.Kff().nonZeros(), nnz);
+    EXPECT_EQ(model.patternRevision(), revision);
+    EXPECT_GT((matX(model.Kff()) - K0).norm(), 1e-3);  // values did change
+
+    // Values are zeroed, not accumulated, between evaluations
+    const matX K1 = matX(model.Kff());
+    ASSERT_TRUE(model.evaluate(1, r, true));
+    EXPECT_EQ((matX(model.Kff()) - K1).norm(), 0.0);
+
+    // Releasing a constraint renumbers and rebuilds
+    model.releaseConstraint({2}, 1);
+    EXPECT_EQ(model.patternRevision(), revision + 1);
+    EXPECT_EQ(model.nFreeDofs(), 16);
+    ASSERT_TRUE(model.evaluate(1, r, true));
+    EXPECT_EQ(model.Kff().rows(), 16);
+}
+
+
+TEST(solidModel, PrescribedValuesIncrementsAndOverrides)
+{
+    solidModel model = frameModel();
+    vecX dUp = model.prescribedIncrement(2);
+    ASSERT_EQ(dUp.size(), 5);
+    EXPECT_DOUBLE_EQ(dUp(2), 0.2);   // dof 5 = node 2 y, value 0.1 t
+    EXPECT_EQ(dUp.norm(), 0.2);
+    model.applyPrescribed(2);
+    EXPECT_DOUBLE_EQ(model.U()(5), 0.2);
+    EXPECT_EQ(model.prescribedIncrement(2).norm(), 0.0);
+    EXPECT_DOUBLE_EQ(model.prescribedIncrement(3)(2), 0.1);
+
+    // A later constraint on the same dof overrides the earlier one
+    model.addConstraint({2}, 1, [](double t) { return -t; });
+    EXPECT_DOUBLE_EQ(model.prescribedIncrement(1)(2), -1.2);
+    EXPECT_EQ(model.displacement()(2, 1), 0.2);
+}
+
+
+TEST(solidModel, ReactionsBalanceTheImposedMotion)
+{
+    // One bar along x, node 0 fixed, node 1 pulled to u = 0.1: the
+    // reaction at node 1 is the bar force N(l = 1.1) along +x, the one at
+    // node 0 its opposite
+    registerTestElements();
+    matX X(2, 2);
+    X << 0, 0, 1, 0;
+    auto mats = barMaterial(100);
+    solidModel model(trussMesh(X, {{0, 1}}), analysisType::planeStrain, mats);
+    model.addConstraint({0, 1}, 0, [](double t) { return t*0.0; });
+    model.addConstraint({0}, 1);
+    model.addConstraint({1}, 0, [](double t) { return 0.1*t; });
+    model.addConstraint({1}, 1);
+    model.finalise();
+    model.applyPrescribed(1);
+    vecX r;
+    ASSERT_TRUE(model.evaluate(1, r, true));
+    EXPECT_EQ(r.size(), 0);
+    double N, dN;
+    testTruss::law(dynamic_cast<trussMaterial&>(*mats["bar"]), 1, 1.1, N, dN);
+    EXPECT_NEAR(model.reaction({1})(0), N, 1e-12);
+    EXPECT_NEAR(model.reaction({0})(0), -N, 1e-12);
+    EXPECT_NEAR(model.reaction({0, 1}).norm(), 0, 1e-12);
+    EXPECT_NEAR(model.reactionNorm(), std::sqrt(2.0)*N, 1e-12);
+    EXPECT_EQ(model.externalForceNorm(), 0);
+}
+
+
+TEST(solidModel, CommitAndRevertRestoreDisplacementsAndStates)
+{
+    solidModel model = frameModel();
+    vecX r;
+    model.applyPrescribed(1);
+    ASSERT_TRUE(model.evaluate(1, r, true));
+    model.commit();
+    const vecX Uc = model.U();
+    const auto resultsC = model.elementResults();
+
+    model.setDisplacement(someDisplacement(model.nDofs()));
+    model.applyPrescribed(2);
+    ASSERT_TRUE(model.evaluate(2, r, true));
+    const auto resultsT = model.elementResults();
+    double change = 0;
+    for (std::size_t e = 0; e < resultsC.size(); ++e)
+    {
+        change += std::abs(resultsT[e].equivalentStrain
+            - resultsC[e].equivalentStrain);
+    }
+    ASSERT_GT(change, 1e-3);
+
+    model.revert();
+    EXPECT_EQ((model.U() - Uc).norm(), 0.0);
+    const auto resultsR = model.elementResults();
+    for (std::size_t e = 0; e < resultsC.size(); ++e)
+    {
+        EXPECT_EQ(resultsR[e].equivalentStrain, resultsC[e].equivalentStrain);
+    }
+}
+
+
+TEST(solidModel, MaterialFailureReturnsFalseAndInversionThrows)
+{
+    registerTestElements();
+    auto mats = barMaterial(100);
+    std::dynamic_pointer_cast<trussMaterial>(mats["bar"])->strainLimit = 0.2;
+    solidModel model(frameMesh(), analysisType::planeStrain, mats);
+    model.addConstraint({0}, 0);
+    model.addConstraint({0}, 1);
+    model.finalise();
+    vecX r;
+    EXPECT_TRUE(model.evaluate(0, r, true));
+
+    vecX U = vecX::Zero(model.nDofs());
+    U(2*8) = 0.5;                         // stretches bars at node 8 by 50%
+    model.setDisplacement(U);
+    EXPECT_FALSE(model.evaluate(0, r, true));
+
+    U.setZero();
+    U(2*1) = -1;                          // node 1 onto node 0: bar 0 collapses
+    model.setDisplacement(U);
+    try
+    {
+        model.evaluate(0, r, true);
+        FAIL() << "no exception";
+    }
+    catch (const inversionError& e)
+    {
+        EXPECT_EQ(e.element(), 0);
+    }
+}
+
+
+TEST(solidModel, BadInputThrowsInputErrorNamingTheEntry)
+{
+    registerTestElements();
+    // Unknown material
+    try
+    {
+        solidModel m(frameMesh(), analysisType::planeStrain, {});
+        FAIL() << "no exception";
+    }
+    catch (const inputError& e)
+    {
+        EXPECT_EQ(e.entry(), "material");
+    }
+    // Unknown element type
+    feMesh mesh = frameMesh();
+    mesh.blocks[0].elementType = "Q5";
+    try
+    {
+        solidModel m(mesh, analysisType::planeStrain, barMaterial());
+        FAIL() << "no exception";
+    }
+    catch (const inputError& e)
+    {
+        EXPECT_EQ(e.entry(), "elementType");
+    }
+    // Unknown face set
+    solidModel m(frameMesh(), analysisType::planeStrain, barMaterial());
+    try
+    {
+        m.addPressure("top", [](double) { return 1.0; });
+        FAIL() << "no exception";
+    }
+    catch (const inputError& e)
+    {
+        EXPECT_EQ(e.entry(), "top");
+    }
+    EXPECT_THROW(m.addConstraint({0}, 2), inputError);
+    EXPECT_THROW(m.addConstraint({42}, 0), inputError);
+}
