@@ -1,1 +1,522 @@
-// placeholder: to be implemented
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Load stepping with full Newton-Raphson, energy line search and automatic
+    cutback (see staticSolver.H; Bathe, Finite Element Procedures, 2nd ed.,
+    sec. 8.4).
+\*---------------------------------------------------------------------------*/
+#include "staticSolver.H"
+#include "formError.H"
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <ostream>
+
+namespace form
+{
+
+namespace
+{
+
+double seconds(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - start
+    ).count();
+}
+
+std::string fmt(const char* format, double a)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), format, a);
+    return buf;
+}
+
+// Step failure inside the Newton loop: turned into "return false"
+struct stepFailure : public numericalError
+{
+    using numericalError::numericalError;
+};
+
+} // namespace
+
+
+staticSolver::staticSolver
+(
+    solidModel& model,
+    linearSolver& solver,
+    newtonControls newton,
+    stepControls steps,
+    std::ostream& log
+)
+:
+    model_(model),
+    solver_(solver),
+    newton_(newton),
+    steps_(steps),
+    log_(log)
+{
+    checkSolver();
+    if (newton_.maxIterations < 1)
+    {
+        throw inputError("maxIterations", "maxIterations must be >= 1");
+    }
+    if (!(steps_.deltaT > 0) || !(steps_.minDeltaT > 0)
+     || !(steps_.maxDeltaT > 0))
+    {
+        throw inputError
+        (
+            "deltaT",
+            "deltaT, minDeltaT and maxDeltaT must be positive"
+        );
+    }
+    if (!(steps_.cutbackFactor > 0 && steps_.cutbackFactor < 1))
+    {
+        throw inputError("cutbackFactor", "cutbackFactor must be in (0, 1)");
+    }
+    if (!(steps_.growthFactor >= 1))
+    {
+        throw inputError("growthFactor", "growthFactor must be >= 1");
+    }
+}
+
+
+void staticSolver::checkSolver() const
+{
+    if (solver_.requiresSPD() && model_.unsymmetric())
+    {
+        throw inputError
+        (
+            "linearSolver",
+            "linearSolver " + solver_.type() + " needs a symmetric positive"
+            " definite matrix, but follower loads make the tangent"
+            " unsymmetric; use umfpack"
+        );
+    }
+}
+
+
+bool staticSolver::evaluate(double t, vecX& r, bool wantTangent)
+{
+    try
+    {
+        return model_.evaluate(t, r, wantTangent);
+    }
+    catch (const inversionError& e)
+    {
+        lastFailure_ = e.what();
+        return false;
+    }
+}
+
+
+vecX staticSolver::solveLinear(const vecX& rhs)
+{
+    phaseTimes& times = model_.times();
+    auto start = std::chrono::steady_clock::now();
+    if
+    (
+        !patternAnalysed_
+     || analysedRevision_ != model_.patternRevision()
+    )
+    {
+        solver_.analyzePattern(model_.Kff());
+        patternAnalysed_ = true;
+        analysedRevision_ = model_.patternRevision();
+    }
+    try
+    {
+        solver_.factorize(model_.Kff());
+    }
+    catch (...)
+    {
+        times.factorisation += seconds(start);
+        throw;
+    }
+    times.factorisation += seconds(start);
+
+    start = std::chrono::steady_clock::now();
+    vecX dU = solver_.solve(rhs);
+    times.solve += seconds(start);
+    if (!dU.allFinite())
+    {
+        throw stepFailure("linear solve returned non-finite values");
+    }
+    return dU;
+}
+
+
+// FEP sec. 8.4.2: find beta with |dU . r(U0 + beta dU)| <= tol |dU . r(U0)|
+// by regula falsi with the Illinois modification on the bracket [0, 1]
+// (the full step is tried first). A failed evaluation (inverted element,
+// failed material update) is treated as "too far" and bisected.
+bool staticSolver::lineSearch
+(
+    double t,
+    const vecX& dU,
+    const vecX& r0,
+    bool ok,
+    vecX& r,
+    double& beta
+)
+{
+    beta = 1;
+    const double s0 = dU.dot(r0);
+    double s1 = ok ? dU.dot(r) : 0;
+    if (ok && std::abs(s1) <= newton_.lineSearchTolerance*std::abs(s0))
+    {
+        return true;
+    }
+    // Still descending at the full step: maxBeta limits the step (no
+    // extrapolation beyond it)
+    if (ok && s1*s0 > 0)
+    {
+        if (newton_.maxBeta <= 1) return true;
+    }
+
+    double bLo = 0, sLo = s0;
+    double bHi = 1, sHi = s1;
+    bool hiValid = ok;
+    int lastSide = 0;
+    double current = 1;
+
+    if (ok && s1*s0 > 0)
+    {
+        // Extrapolate towards maxBeta until the sign changes
+        bLo = 1; sLo = s1;
+        bHi = newton_.maxBeta;
+        model_.addToFree((bHi - current)*dU);
+        current = bHi;
+        hiValid = evaluate(t, r, false);
+        if (hiValid) sHi = dU.dot(r);
+        if (hiValid && sHi*s0 > 0)
+        {
+            beta = current;
+            return evaluate(t, r, true);
+        }
+    }
+
+    bool found = false;
+    bool currentValid = hiValid;
+    for (int k = 0; k < newton_.maxLineSearchIterations; ++k)
+    {
+        double b;
+        if (!hiValid)
+        {
+            b = 0.5*(bLo + bHi);
+        }
+        else
+        {
+            b = bHi - sHi*(bHi - bLo)/(sHi - sLo);
+            const double w = bHi - bLo;
+            b = std::min(std::max(b, bLo + 0.05*w), bHi - 0.05*w);
+        }
+        model_.addToFree((b - current)*dU);
+        current = b;
+        currentValid = evaluate(t, r, false);
+        if (!currentValid)
+        {
+            bHi = b;
+            hiValid = false;
+            continue;
+        }
+        const double s = dU.dot(r);
+        if (std::abs(s) <= newton_.lineSearchTolerance*std::abs(s0))
+        {
+            found = true;
+            break;
+        }
+        if (s*s0 > 0)
+        {
+            bLo = b; sLo = s;
+            if (lastSide == -1 && hiValid) sHi *= 0.5;
+            lastSide = -1;
+        }
+        else
+        {
+            bHi = b; sHi = s; hiValid = true;
+            if (lastSide == 1) sLo *= 0.5;
+            lastSide = 1;
+        }
+    }
+    if (!found && !currentValid)
+    {
+        // Fall back to the largest admissible point of the bracket
+        if (bLo <= 0) return false;
+        model_.addToFree((bLo - current)*dU);
+        current = bLo;
+    }
+    beta = current;
+    return evaluate(t, r, true);
+}
+
+
+bool staticSolver::solveIncrement(double t0, double t1, stepReport& report)
+{
+    checkSolver();
+    report.time = t1;
+    report.deltaT = t1 - t0;
+    report.iterations = 0;
+    report.residualNorms.clear();
+    report.updateNorms.clear();
+    lastFailure_.clear();
+    lastResidual_ = std::numeric_limits<double>::quiet_NaN();
+    try
+    {
+        return newton(t0, t1, report);
+    }
+    catch (const inputError&)
+    {
+        throw;
+    }
+    catch (const numericalError& e)
+    {
+        lastFailure_ = e.what();
+        log_<< "    failed: " << lastFailure_ << '\n';
+        return false;
+    }
+}
+
+
+bool staticSolver::newton(double /*t0*/, double t1, stepReport& report)
+{
+    const int nFree = model_.nFreeDofs();
+    vecX r;
+
+    // Residual at the committed state with the loads of t1
+    const vecX dUp = model_.prescribedIncrement(t1);
+    if (!evaluate(t1, r, nFree > 0))
+    {
+        throw stepFailure
+        (
+            lastFailure_.empty()
+          ? "material update failed at the start of the step"
+          : lastFailure_
+        );
+    }
+
+    // Consistent predictor (FEP sec. 8.4): the prescribed increment enters
+    // the first right-hand side as -K_fp dU_p, so the first update already
+    // carries the elastic response to the imposed motion
+    vecX rhs = r;
+    if (nFree > 0 && dUp.size() > 0) rhs.noalias() -= model_.Kfp()*dUp;
+    model_.applyPrescribed(t1);
+
+    const double r0 = rhs.norm();
+    // Force level at the start of the step: divergence is measured against
+    // it (the reactions of a diverging iterate grow with its residual)
+    const double startRef = std::max
+    (
+        {r0, model_.externalForceNorm(), model_.reactionNorm()}
+    );
+    report.residualNorms.push_back(r0);
+    report.updateNorms.push_back(0);
+    lastResidual_ = r0;
+
+    char line[160];
+    std::snprintf
+    (
+        line, sizeof(line), "    iter %2d  |r| %.3e  |dU_p| %.3e\n",
+        0, r0, dUp.norm()
+    );
+    log_<< line;
+
+    if (nFree == 0)
+    {
+        if (!evaluate(t1, r, false))
+        {
+            throw stepFailure("material update failed");
+        }
+        report.iterations = 0;
+        return true;
+    }
+
+    double energy1 = 0;
+    for (int i = 1; i <= newton_.maxIterations; ++i)
+    {
+        const vecX dU = solveLinear(rhs);
+
+        model_.addToFree(dU);
+        bool ok = evaluate(t1, r, true);
+        double beta = 1;
+        if (newton_.lineSearch)
+        {
+            ok = lineSearch(t1, dU, rhs, ok, r, beta);
+        }
+        if (!ok)
+        {
+            throw stepFailure
+            (
+                "iteration " + std::to_string(i) + ": "
+              + (
+                    lastFailure_.empty()
+                  ? std::string("material update failed")
+                  : lastFailure_
+                )
+            );
+        }
+
+        // Convergence (FEP eqs. 8.xx): out-of-balance force relative to
+        // the force level, and the energy of this update relative to the
+        // first one
+        const double energy = std::abs(beta*dU.dot(rhs));
+        if (i == 1) energy1 = energy;
+        const double energyRatio = energy1 > 0 ? energy/energy1 : 0;
+        const double rNorm = r.norm();
+        const double ref = std::max
+        (
+            {model_.externalForceNorm(), model_.reactionNorm(), r0}
+        );
+        const double rRel = ref > 0 ? rNorm/ref : rNorm;
+        const double dUNorm = beta*dU.norm();
+
+        report.residualNorms.push_back(rNorm);
+        report.updateNorms.push_back(dUNorm);
+        report.iterations = i;
+        lastResidual_ = rNorm;
+
+        std::snprintf
+        (
+            line, sizeof(line),
+            "    iter %2d  |r| %.3e  |r|/ref %.3e  |dU| %.3e  energy %.3e"
+            "  beta %.3g\n",
+            i, rNorm, rRel, dUNorm, energyRatio, beta
+        );
+        log_<< line;
+
+        if (!std::isfinite(rNorm))
+        {
+            throw stepFailure("non-finite residual");
+        }
+        const bool converged =
+            rNorm <= newton_.absoluteForceTolerance
+         || (
+                rNorm <= newton_.forceTolerance*ref
+             && energyRatio <= newton_.energyTolerance
+            );
+        if (converged)
+        {
+            return true;
+        }
+        if (rNorm > newton_.divergenceFactor*startRef)
+        {
+            throw stepFailure
+            (
+                "residual diverged (|r| = " + fmt("%.3e", rNorm)
+              + " > divergenceFactor * " + fmt("%.3e", startRef)
+              + ")"
+            );
+        }
+        rhs = r;
+    }
+    throw stepFailure
+    (
+        "not converged in maxIterations = "
+      + std::to_string(newton_.maxIterations)
+    );
+}
+
+
+void staticSolver::run
+(
+    const std::function<void(const stepReport&)>& onConverged
+)
+{
+    const double tEnd = steps_.endTime;
+    double t = steps_.startTime;
+    double dt = std::min(steps_.deltaT, steps_.maxDeltaT);
+    // Times closer than this to endTime count as endTime
+    const double tiny = 1e-12*std::max(1.0, std::abs(tEnd));
+    int step = 0;
+
+    while (t < tEnd - tiny)
+    {
+        ++step;
+        int cutbacks = 0;
+        for (;;)
+        {
+            double t1 = t + dt;
+            // Land exactly on endTime (no sliver of a last step)
+            if (t1 >= tEnd - 1e-6*dt) t1 = tEnd;
+
+            char line[160];
+            std::snprintf
+            (
+                line, sizeof(line), "Step %d  t = %.6g  deltaT = %.6g%s\n",
+                step, t1, t1 - t,
+                cutbacks ? ("  (cutback " + std::to_string(cutbacks) + ")")
+                    .c_str() : ""
+            );
+            log_<< line;
+
+            stepReport report;
+            report.step = step;
+            report.cutbacks = cutbacks;
+            if (solveIncrement(t, t1, report))
+            {
+                model_.commit();
+                totalIterations_ += report.iterations;
+                std::snprintf
+                (
+                    line, sizeof(line),
+                    "  converged in %d iterations, |r| = %.3e\n",
+                    report.iterations, report.residualNorms.back()
+                );
+                log_<< line;
+                t = t1;
+                if (onConverged) onConverged(report);
+                if
+                (
+                    cutbacks == 0
+                 && report.iterations <= steps_.easyIterations
+                )
+                {
+                    dt = std::min(dt*steps_.growthFactor, steps_.maxDeltaT);
+                }
+                break;
+            }
+
+            model_.revert();
+            ++cutbacks;
+            const double tried = t1 - t;
+            const double next = tried*steps_.cutbackFactor;
+            if (cutbacks > steps_.maxCutbacks || next < steps_.minDeltaT)
+            {
+                std::string msg =
+                    "staticSolver: no convergence for the step from t = "
+                  + fmt("%.6g", t) + " to t = " + fmt("%.6g", t1)
+                  + " (deltaT = " + fmt("%.6g", tried) + ") after "
+                  + std::to_string(cutbacks - 1) + " cutbacks";
+                msg +=
+                    cutbacks > steps_.maxCutbacks
+                  ? "; maxCutbacks = " + std::to_string(steps_.maxCutbacks)
+                      + " reached"
+                  : "; deltaT would fall below minDeltaT = "
+                      + fmt("%.6g", steps_.minDeltaT);
+                msg += "; last residual |r| = " + fmt("%.3e", lastResidual_);
+                if (!lastFailure_.empty())
+                {
+                    msg += "; last failure: " + lastFailure_;
+                }
+                log_<< msg << '\n';
+                throw convergenceError(msg);
+            }
+            log_<< "  step failed"
+                << (lastFailure_.empty() ? "" : ": " + lastFailure_)
+                << "; cutting back deltaT to " << fmt("%.6g", next) << '\n';
+            dt = next;
+        }
+    }
+}
+
+
+int staticSolver::totalIterations() const
+{
+    return totalIterations_;
+}
+
+} // namespace form

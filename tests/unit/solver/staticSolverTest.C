@@ -1,0 +1,356 @@
+// Unit tests of form::staticSolver on bar structures with exact tangents:
+// quadratic convergence, consistent predictor, line search, cutback and
+// recovery, convergenceError, state after failure, step control.
+#include "staticSolver.H"
+#include "testElements.H"
+#include <gtest/gtest.h>
+#include <cmath>
+#include <sstream>
+
+using namespace form;
+using namespace form::test;
+
+namespace
+{
+
+std::shared_ptr<trussMaterial> barLaw
+(
+    bool svk, double EA, double Fs = 0, double c3 = 0
+)
+{
+    auto m = std::make_shared<trussMaterial>();
+    m->svk = svk;
+    m->EA = EA;
+    m->Fs = Fs;
+    m->c3 = c3;
+    return m;
+}
+
+// Face set "load" on element e of the single block (nodes a, b)
+void addLoadFaces(feMesh& mesh, const std::vector<int>& elements)
+{
+    for (int e : elements)
+    {
+        const int* n = mesh.blocks[0].nodes(e);
+        mesh.faceSets["load"].push_back({0, e, 0, {n[0], n[1]}});
+    }
+}
+
+// Von Mises truss A(0,0) - B(1,h) - C(2.5,0), A and C pinned, B loaded
+// downwards by a dead traction on bar AB (half of q L_AB reaches B)
+solidModel vonMisesTruss(double h, double q, std::shared_ptr<material> m)
+{
+    registerTestElements();
+    matX X(3, 2);
+    X << 0, 0, 1, h, 2.5, 0;
+    feMesh mesh = trussMesh(X, {{0, 1}, {1, 2}});
+    addLoadFaces(mesh, {0});
+    solidModel model(mesh, analysisType::planeStrain, {{"bar", m}});
+    model.addConstraint({0, 2}, 0);
+    model.addConstraint({0, 2}, 1);
+    model.addTraction("load", [q](double t)
+    {
+        return Eigen::Vector2d(0, -q*t);
+    });
+    model.finalise();
+    return model;
+}
+
+// One bar (0,0)-(1,0) along x, node 0 pinned, node 1 on a roller, pulled
+// by the end force F t (traction 2F on the unit bar: half reaches node 1)
+solidModel pulledBar(double F, std::shared_ptr<material> m)
+{
+    registerTestElements();
+    matX X(2, 2);
+    X << 0, 0, 1, 0;
+    feMesh mesh = trussMesh(X, {{0, 1}});
+    addLoadFaces(mesh, {0});
+    solidModel model(mesh, analysisType::planeStrain, {{"bar", m}});
+    model.addConstraint({0}, 0);
+    model.addConstraint({0, 1}, 1);
+    model.addTraction("load", [F](double t)
+    {
+        return Eigen::Vector2d(2*F*t, 0);
+    });
+    model.finalise();
+    return model;
+}
+
+// Rates log(r_{k+1}/ref)/log(r_k/ref) for iterates in the asymptotic range
+std::vector<double> convergenceRates(const std::vector<double>& r, double ref)
+{
+    std::vector<double> rates;
+    for (std::size_t k = 1; k + 1 < r.size(); ++k)
+    {
+        const double a = r[k]/ref, b = r[k + 1]/ref;
+        if (a < 1e-2 && b > 1e-14)
+        {
+            rates.push_back(std::log(b)/std::log(a));
+        }
+    }
+    return rates;
+}
+
+} // namespace
+
+
+TEST(staticSolver, NewtonConvergesQuadratically)
+{
+    // One load step to 70% of the snap-through load of a shallow arch:
+    // strongly nonlinear (bar rotation, SVK strain), exact tangent
+    const double q = 3.0;
+    solidModel model = vonMisesTruss(0.5, q, barLaw(true, 100));
+    auto solver = linearSolver::New("cholmod");
+    newtonControls nc;
+    nc.forceTolerance = 1e-13;
+    nc.energyTolerance = 1e-30;
+    nc.lineSearch = false;
+    stepControls sc;
+    sc.deltaT = 1;
+    std::ostringstream log;
+    staticSolver s(model, *solver, nc, sc, log);
+    std::vector<stepReport> reports;
+    s.run([&](const stepReport& r) { reports.push_back(r); });
+
+    ASSERT_EQ(reports.size(), 1u) << log.str();
+    const auto& r = reports[0].residualNorms;
+    ASSERT_GE(r.size(), 5u) << log.str();
+    const std::vector<double> rates = convergenceRates(r, r[0]);
+    ASSERT_GE(rates.size(), 2u) << log.str();
+    for (double rate : rates)
+    {
+        EXPECT_GT(rate, 1.7) << log.str();
+        EXPECT_LT(rate, 2.6) << log.str();
+    }
+    // Equilibrium: vertical reaction at A and C balances q*t*L_AB (the
+    // traction acts on the whole of bar AB)
+    const double LAB = std::sqrt(1 + 0.25);
+    EXPECT_NEAR(model.reaction({0, 2})(1), q*LAB, 1e-10*q);
+    std::cout << log.str();
+}
+
+
+TEST(staticSolver, ConsistentPredictorSolvesLinearProblemInOneUpdate)
+{
+    // Two collinear linear bars, end pulled by prescribed u = 0.1 t: the
+    // first update (with -K_fp dU_p on the right-hand side) is exact
+    registerTestElements();
+    matX X(3, 2);
+    X << 0, 0, 1, 0, 3, 0;
+    solidModel model
+    (
+        trussMesh(X, {{0, 1}, {1, 2}}), analysisType::planeStrain,
+        {{"bar", barLaw(false, 100)}}
+    );
+    model.addConstraint({0}, 0);
+    model.addConstraint({0, 1, 2}, 1);
+    model.addConstraint({2}, 0, [](double t) { return 0.3*t; });
+    model.finalise();
+    auto solver = linearSolver::New("cholmod");
+    std::ostringstream log;
+    staticSolver s(model, *solver, {}, {}, log);
+    stepReport report;
+    ASSERT_TRUE(s.solveIncrement(0, 1, report)) << log.str();
+    ASSERT_GE(report.residualNorms.size(), 2u);
+    EXPECT_LT(report.residualNorms[1], 1e-12*report.residualNorms[0]);
+    // Uniform strain 0.1: node 1 at 0.1
+    EXPECT_NEAR(model.U()(2), 0.1, 1e-14);
+    EXPECT_NEAR(model.reaction({2})(0), 100*0.1, 1e-12);
+}
+
+
+TEST(staticSolver, DivergingStepIsCutBackAndReachesTheSmallStepAnswer)
+{
+    // S-shaped bar law: a plateau at N ~ Fs then cubic hardening. A single
+    // step to F = 5 Fs overshoots deep into the hardening branch and the
+    // residual grows: Newton diverges and the step is cut back
+    auto law = barLaw(false, 1000, 1, 10);
+    newtonControls nc;
+    nc.lineSearch = false;
+    nc.divergenceFactor = 50;
+    nc.maxIterations = 12;
+
+    // Reference: many small steps
+    solidModel ref = pulledBar(5, law);
+    auto solver = linearSolver::New("cholmod");
+    stepControls small;
+    small.deltaT = 0.02;
+    small.growthFactor = 1;
+    std::ostringstream refLog;
+    staticSolver(ref, *solver, nc, small, refLog).run(nullptr);
+
+    solidModel model = pulledBar(5, law);
+    stepControls big;
+    big.deltaT = 1;
+    std::ostringstream log;
+    staticSolver s(model, *solver, nc, big, log);
+    std::vector<stepReport> reports;
+    s.run([&](const stepReport& r) { reports.push_back(r); });
+
+    EXPECT_NE(log.str().find("residual diverged"), std::string::npos)
+        << log.str();
+    ASSERT_FALSE(reports.empty());
+    EXPECT_GE(reports[0].cutbacks, 1) << log.str();
+    EXPECT_EQ(reports.back().time, 1.0);
+    EXPECT_NEAR(model.U()(2), ref.U()(2), 1e-9*std::abs(ref.U()(2)));
+    // The bar force equals the applied end force
+    EXPECT_NEAR(model.reaction({1})(0), -0*5 + 0, 1e-8);   // node 1 is free
+    EXPECT_NEAR(model.reaction({0})(0), -5 - 5, 1e-8);
+    std::cout << log.str();
+}
+
+
+TEST(staticSolver, LineSearchRescuesTheOvershootingStep)
+{
+    auto law = barLaw(false, 1000, 1, 10);
+    solidModel model = pulledBar(5, law);
+    auto solver = linearSolver::New("umfpack");
+    newtonControls nc;
+    nc.lineSearch = true;
+    nc.divergenceFactor = 50;
+    nc.maxIterations = 30;
+    std::ostringstream log;
+    staticSolver s(model, *solver, nc, {}, log);
+    stepReport report;
+    ASSERT_TRUE(s.solveIncrement(0, 1, report)) << log.str();
+    // Some iteration used beta < 1
+    EXPECT_NE(log.str().find("beta 0."), std::string::npos) << log.str();
+    // e solves Fs tanh(EA e/Fs) + EA c3 e^3 = 5
+    const double e = model.U()(2);
+    EXPECT_NEAR(std::tanh(1000*e) + 1000*10*e*e*e, 5, 1e-9);
+    std::cout << log.str();
+}
+
+
+TEST(staticSolver, ImpossibleProblemThrowsConvergenceErrorAndKeepsCommittedState)
+{
+    // The bar force saturates at Fs = 1 but the load grows to 2: there is
+    // no equilibrium beyond t = 0.5
+    auto law = barLaw(false, 100, 1, 0);
+    solidModel model = pulledBar(2, law);
+    auto solver = linearSolver::New("cholmod");
+    newtonControls nc;
+    nc.maxIterations = 15;
+    stepControls sc;
+    sc.deltaT = 0.1;
+    sc.minDeltaT = 1e-3;
+    sc.maxCutbacks = 6;
+    std::ostringstream log;
+    staticSolver s(model, *solver, nc, sc, log);
+    vecX Ulast;
+    std::vector<elementResult> resultsLast;
+    double tLast = 0;
+    try
+    {
+        s.run([&](const stepReport& r)
+        {
+            Ulast = model.U();
+            resultsLast = model.elementResults();
+            tLast = r.time;
+        });
+        FAIL() << "no exception\n" << log.str();
+    }
+    catch (const convergenceError& e)
+    {
+        const std::string msg = e.what();
+        std::cout << "convergenceError: " << msg << '\n';
+        EXPECT_NE(msg.find("no convergence"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("from t = " + std::to_string(tLast).substr(0, 3)),
+            std::string::npos) << msg;
+        EXPECT_NE(msg.find("deltaT = "), std::string::npos) << msg;
+        EXPECT_NE(msg.find("last residual |r| = "), std::string::npos) << msg;
+    }
+    EXPECT_LT(tLast, 0.5);
+    EXPECT_GT(tLast, 0.3);
+    // The failed step left the committed state behind
+    ASSERT_EQ(Ulast.size(), model.U().size());
+    EXPECT_EQ((model.U() - Ulast).norm(), 0.0);
+    const auto results = model.elementResults();
+    EXPECT_EQ(results[0].equivalentStrain, resultsLast[0].equivalentStrain);
+}
+
+
+TEST(staticSolver, FailedIncrementReturnsFalseAndRevertRestoresState)
+{
+    auto law = barLaw(false, 100, 1, 0);
+    solidModel model = pulledBar(2, law);
+    auto solver = linearSolver::New("cholmod");
+    std::ostringstream log;
+    staticSolver s(model, *solver, {}, {}, log);
+    stepReport report;
+    ASSERT_TRUE(s.solveIncrement(0, 0.2, report));
+    model.commit();
+    const vecX Uc = model.U();
+    const double strainC = model.elementResults()[0].equivalentStrain;
+    EXPECT_NEAR(std::tanh(100*Uc(2)), 0.4, 1e-10);
+
+    EXPECT_FALSE(s.solveIncrement(0.2, 1, report));
+    EXPECT_GT((model.U() - Uc).norm(), 0);   // Newton moved it
+    model.revert();
+    EXPECT_EQ((model.U() - Uc).norm(), 0.0);
+    EXPECT_EQ(model.elementResults()[0].equivalentStrain, strainC);
+}
+
+
+TEST(staticSolver, StepsGrowAndLandExactlyOnEndTime)
+{
+    solidModel model = vonMisesTruss(0.5, 0.5, barLaw(true, 100));
+    auto solver = linearSolver::New("sparseLU");
+    stepControls sc;
+    sc.startTime = 0;
+    sc.endTime = 1;
+    sc.deltaT = 0.07;
+    sc.maxDeltaT = 0.25;
+    sc.growthFactor = 2;
+    std::ostringstream log;
+    staticSolver s(model, *solver, {}, sc, log);
+    std::vector<double> times, dts;
+    s.run([&](const stepReport& r)
+    {
+        times.push_back(r.time);
+        dts.push_back(r.deltaT);
+    });
+    ASSERT_GE(times.size(), 3u);
+    EXPECT_EQ(times.back(), 1.0);
+    EXPECT_NEAR(dts[0], 0.07, 1e-15);
+    EXPECT_NEAR(dts[1], 0.14, 1e-15);       // grown after an easy step
+    for (double dt : dts) EXPECT_LE(dt, 0.25 + 1e-15);
+    for (std::size_t k = 1; k < times.size(); ++k)
+    {
+        EXPECT_GT(times[k], times[k - 1]);
+    }
+    EXPECT_GT(s.totalIterations(), int(times.size()));
+    EXPECT_GT(model.times().assembly, 0);
+    EXPECT_GT(model.times().factorisation, 0);
+
+    // Log lines name the quantities of every iteration
+    const std::string l = log.str();
+    for (const char* key : {"iter  1", "|r|", "|r|/ref", "|dU|", "energy",
+        "beta", "Step 1", "converged in"})
+    {
+        EXPECT_NE(l.find(key), std::string::npos) << key;
+    }
+}
+
+
+TEST(staticSolver, SPDSolverRejectsUnsymmetricModel)
+{
+    solidModel model = vonMisesTruss(0.5, 0.5, barLaw(true, 100));
+    model.addPressure("load", [](double t) { return 0.1*t; });
+    ASSERT_TRUE(model.unsymmetric());
+    auto solver = linearSolver::New("cholmod");
+    std::ostringstream log;
+    try
+    {
+        staticSolver s(model, *solver, {}, {}, log);
+        FAIL() << "no exception";
+    }
+    catch (const inputError& e)
+    {
+        EXPECT_EQ(e.entry(), "linearSolver");
+        EXPECT_NE(std::string(e.what()).find("umfpack"), std::string::npos);
+    }
+    auto lu = linearSolver::New("umfpack");
+    staticSolver s(model, *lu, {}, {}, log);
+    EXPECT_NO_THROW(s.run(nullptr));
+}
