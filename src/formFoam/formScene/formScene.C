@@ -249,7 +249,7 @@ void Foam::formScene::run()
         const clockTime outClock;
         runTime_.setTime(t, index);
         Info<< "    writing time " << runTime_.timeName() << endl;
-        solid.write(runTime_.timeName(), t);
+        solid.write();
         solid.model().times().output += outClock.elapsedTime();
     };
 

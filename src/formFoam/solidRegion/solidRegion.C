@@ -182,7 +182,7 @@ void Foam::solidRegion::readBoundaryConditions()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
-Foam::solidRegion::solidRegion(const Time& runTime, const word& name)
+Foam::solidRegion::solidRegion(Time& runTime, const word& name)
 :
     runTime_(runTime),
     name_(name),
@@ -298,16 +298,22 @@ Foam::string Foam::solidRegion::describe() const
 }
 
 
-void Foam::solidRegion::write(const word& timeName, scalar time)
+void Foam::solidRegion::write()
 {
+    const word timeName = runTime_.timeName();
+    const scalar time = runTime_.value();
+    const label timeIndex = runTime_.timeIndex();
     const form::feMesh& fe = feMesh_->feMesh();
     const form::matX U = model_->displacement();
     const std::vector<form::elementResult> results = model_->elementResults();
 
     // Fields go to a temporary instance that is renamed when complete
+    // (OpenFOAM writes fields to the current time name: switch the time's
+    // name to the temporary one while writing)
     const word tmpInstance = "." + timeName + ".writing";
     const fileName tmpDir = runTime_.path()/tmpInstance;
-    rmDir(tmpDir);
+    if (isDir(tmpDir)) rmDir(tmpDir);
+    runTime_.setTime(instant(time, tmpInstance), timeIndex);
 
     const auto io = [&](const word& fieldName)
     {
@@ -410,6 +416,7 @@ void Foam::solidRegion::write(const word& timeName, scalar time)
     ok = p.write() && ok;
     ok = epsilonEq.write() && ok;
     ok = feU.write() && ok;
+    runTime_.setTime(instant(time, timeName), timeIndex);
     if (!ok)
     {
         FatalErrorInFunction
@@ -420,7 +427,7 @@ void Foam::solidRegion::write(const word& timeName, scalar time)
     // Move region fields into place: <time>/<region>
     const fileName timeDir = runTime_.path()/timeName;
     mkDir(timeDir);
-    rmDir(timeDir/name_);
+    if (isDir(timeDir/name_)) rmDir(timeDir/name_);
     if (!Foam::mv(tmpDir/name_, timeDir/name_))
     {
         FatalErrorInFunction
