@@ -16,6 +16,12 @@ tryCase()
     (cd "$c" && eval "$@")
     (cd "$c" && timeout 120 formFoam > log.formFoam 2>&1)
     expectFailure "$label" $? "$c/log.formFoam" "$regex"
+    # the input in the start time directory must survive a failed run
+    if ! diff -q "$base/0/solid/D" "$c/0/solid/D" >/dev/null \
+       && [ "$label" = "inverted elements (huge load)" ]; then
+        grep -q 'traction (0 1e3 0)' "$c/0/solid/D" \
+            && pass "$label: 0/solid/D kept" || fail "$label: 0/solid/D overwritten"
+    fi
     rm -rf "$c"
 }
 
@@ -48,7 +54,7 @@ tryCase "summary point outside the mesh" "outside the mesh" \
     "foamDictionary -entry summary/tipDisplacementY/point -set '(100 100 0)' system/solidSolution >/dev/null"
 # an element turned inside out: the load is so large that det F <= 0 in
 # every attempt; formFoam must stop with a message, not write garbage
-tryCase "inverted elements (huge load)" "det ?F|invert|cut" \
+tryCase "inverted elements (huge load)" "det F = .* <= 0.*|no convergence.*cutbacks" \
     "foamDictionary -entry material/type -set neoHookean $props >/dev/null;
      sed -i 's/traction (0 0.0625 0)/traction (0 1e3 0)/' 0/solid/D;
      foamDictionary -entry minDeltaT -set 0.01 system/solidSolution >/dev/null"

@@ -293,13 +293,17 @@ void Foam::formScene::run()
     catch (const form::numericalError& err)
     {
         solid.model().revert();
-        writeNow(lastTime, nSteps);
+        // The start time directory holds the case's input: never overwrite it
+        if (lastTime > steps_.startTime)
+        {
+            writeNow(lastTime, nSteps);
+        }
         FatalErrorInFunction
             << err.what() << nl
             << "    The last converged state (t = " << lastTime
-            << ") is written; restart from it with startFrom latestTime"
-            << " after changing the step controls in system/solidSolution."
-            << exit(FatalError);
+            << ") is in its time directory; restart from it with startFrom"
+            << " latestTime after changing the step controls in"
+            << " system/solidSolution." << exit(FatalError);
     }
 
     const scalar wallTime = clock.elapsedTime();
