@@ -79,6 +79,15 @@ void edgeLoad::followerPressure
 {
     checkEdge(X, "edgeLoad::followerPressure");
     const int n = int(X.rows());
+    if (u.rows() != n || u.cols() != 2)
+    {
+        throw numericalError
+        (
+            "edgeLoad::followerPressure: displacements are "
+          + std::to_string(u.rows()) + "x" + std::to_string(u.cols())
+          + ", coordinates " + std::to_string(n) + "x2"
+        );
+    }
     const bool axi = a == analysisType::axisymmetric;
     const matX x = X + u;
     std::vector<double> xi, w;

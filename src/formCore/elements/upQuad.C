@@ -1,3 +1,11 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    upQuad: reference geometry, kinematics, internal force and consistent
+    (condensed) tangent; registration of Q4, Q9, Q4P1 and Q9P3. Equations
+    in upQuad.H.
+\*---------------------------------------------------------------------------*/
 #include "upQuad.H"
 #include "quadShape.H"
 #include "formError.H"
@@ -57,6 +65,21 @@ std::vector<int> upQuad<NN, NP>::edgeNodes(int edge) const
 
 
 template<int NN, int NP>
+void upQuad<NN, NP>::checkSize(const matX& A, const char* what) const
+{
+    if (A.rows() != NN || A.cols() != 2)
+    {
+        throw numericalError
+        (
+            name_ + ": " + what + " is " + std::to_string(A.rows()) + "x"
+          + std::to_string(A.cols()) + ", expected " + std::to_string(NN)
+          + "x2 (nodes x dimensions)"
+        );
+    }
+}
+
+
+template<int NN, int NP>
 typename upQuad<NN, NP>::pointGeometry upQuad<NN, NP>::geometry
 (
     const matX& X,
@@ -68,8 +91,8 @@ typename upQuad<NN, NP>::pointGeometry upQuad<NN, NP>::geometry
     matN2 dNdr;
     quadShape<NN>::eval(q.r, q.s, g.N, dNdr);
 
-    // J0(i, j) = dX_i/dr_j; dN/dX = dN/dr J0^-1 (Bathe FEP eq. 5.25)
-    const Eigen::Matrix2d J0 = X.topRows<NN>().transpose()*dNdr;
+    // J0(i, j) = dX_i/dr_j; dN/dX = dN/dr J0^-1 (Bathe FEP sec. 5.3)
+    const Eigen::Matrix2d J0 = X.transpose()*dNdr;
     const double detJ0 = J0.determinant();
     if (!(detJ0 > 0))
     {
@@ -81,7 +104,7 @@ typename upQuad<NN, NP>::pointGeometry upQuad<NN, NP>::geometry
         );
     }
     g.dNdX = dNdr*J0.inverse();
-    g.R = g.N.dot(X.col(0).head<NN>());
+    g.R = g.N.dot(X.col(0));
     g.dV = q.w*detJ0;
     if (analysis_ == analysisType::axisymmetric)
     {
@@ -125,8 +148,10 @@ void upQuad<NN, NP>::kinematics
     elementKinematics& k
 ) const
 {
+    checkSize(X, "X");
+    checkSize(u, "u");
     const bool axi = analysis_ == analysisType::axisymmetric;
-    const Eigen::Matrix<double, NN, 2> uN = u.topRows<NN>();
+    const Eigen::Matrix<double, NN, 2> uN = u;
     for (std::size_t q = 0; q < qp_.size(); ++q)
     {
         pointKinematics& pk = k.pt[q];
@@ -183,7 +208,9 @@ void upQuad<NN, NP>::kinematics
         for (std::size_t q = 0; q < qp_.size(); ++q)
         {
             const pointKinematics& pk = k.pt[q];
-            const Eigen::Matrix<double, 1, nDof> div = pk.B.template topRows<3>().colwise().sum();
+            // div(N_u) = 1^T B_x: sum of the normal-strain rows
+            const Eigen::Matrix<double, 1, nDof> div =
+                pk.B.template topRows<3>().colwise().sum();
             k.Mp += pk.Np*pk.Np.transpose()*pk.g.dV;
             rhs += pk.Np*(pk.lnJ*pk.g.dV);
             k.Kpu += pk.Np*div*pk.g.dV;

@@ -16,6 +16,7 @@ matX upQuad<NN, NP>::massMatrix(const matX& X) const
 {
     // One more point per direction than the stiffness rule: exact for
     // N_a N_b on parallelograms also with the 2 pi R factor
+    checkSize(X, "X");
     matX M = matX::Zero(nDof, nDof);
     for (const quadraturePoint2D& q : gaussLegendreQuad(nGauss_ + 1))
     {
@@ -37,6 +38,7 @@ matX upQuad<NN, NP>::massMatrix(const matX& X) const
 template<int NN, int NP>
 infSupMatrices upQuad<NN, NP>::infSup(const matX& X) const
 {
+    checkSize(X, "X");
     const bool axi = analysis_ == analysisType::axisymmetric;
     infSupMatrices s;
     s.Kpu = matX::Zero(NP, nDof);

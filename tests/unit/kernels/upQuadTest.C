@@ -260,3 +260,34 @@ TEST(upQuad, typeProperties)
         else EXPECT_EQ(e3.size(), 2u);
     }
 }
+
+TEST(upQuad, badInputThrowsInsteadOfCrashing)
+{
+    const auto mat = makeMaterial("neoHookean");
+    const auto q9 = solidElement::New("Q9P3", analysisType::axisymmetric);
+    std::vector<materialState> s0(q9->nQuadrature()), s1;
+    vecX f;
+    matX K;
+    // 4 nodes given to a 9-node element
+    Eigen::Matrix<double, 4, 2> c;
+    c << 1, 0, 2, 0, 2, 1, 1, 1;
+    const matX X4 = test::quadNodes<4>(c);
+    EXPECT_THROW(q9->compute(X4, matX::Zero(4, 2), *mat, s0, s1, f, &K, 3),
+                 numericalError);
+    EXPECT_THROW(q9->massMatrix(X4), numericalError);
+    // Wrong number of material states
+    const matX X9 = test::quadNodes<9>(c);
+    std::vector<materialState> few(2);
+    EXPECT_THROW(q9->compute(X9, matX::Zero(9, 2), *mat, few, s1, f, &K, 3),
+                 numericalError);
+    // Clockwise (inverted) reference cell
+    matX Xcw = X9;
+    Xcw.col(1) *= -1;
+    Xcw.col(1).array() += 1;
+    EXPECT_THROW(q9->compute(Xcw, matX::Zero(9, 2), *mat, s0, s1, f, &K, 3),
+                 numericalError);
+    // Axisymmetric cell crossing the axis
+    matX Xneg = X9;
+    Xneg.col(0).array() -= 1.5;
+    EXPECT_THROW(q9->massMatrix(Xneg), numericalError);
+}
