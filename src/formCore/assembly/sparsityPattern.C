@@ -142,6 +142,36 @@ void form::sparsityPattern::build
     setStructure(Kff, nFree, ffColumns);
     setStructure(Kfp, nFree, fpColumns);
 
+    // Greedy colouring in element order: the first colour not used by an
+    // element already coloured that shares a dof (4 colours for structured
+    // quads)
+    {
+        std::vector<int> colour(nElem, -1);
+        std::vector<int> usedBy;   // usedBy[c] == e: colour c taken near e
+        colours_.clear();
+        for (int e = 0; e < nElem; ++e)
+        {
+            for (std::size_t m = offsets[e]; m < offsets[e + 1]; ++m)
+            {
+                const int d = elementDofs[m];
+                for (std::size_t k = dofStart[d]; k < dofStart[d + 1]; ++k)
+                {
+                    const int c = colour[dofElements[k]];
+                    if (c >= 0) usedBy[c] = e;
+                }
+            }
+            int c = 0;
+            while (c < int(usedBy.size()) && usedBy[c] == e) ++c;
+            if (c == int(usedBy.size()))
+            {
+                usedBy.push_back(-1);
+                colours_.emplace_back();
+            }
+            colour[e] = c;
+            colours_[c].push_back(e);
+        }
+    }
+
     // Scatter maps
     codeOffsets_.assign(nElem + 1, 0);
     for (int e = 0; e < nElem; ++e)

@@ -564,7 +564,6 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
         std::fill_n(m.Kfp.valuePtr(), m.Kfp.nonZeros(), 0.0);
     }
 
-    const int nElements = int(m.elemBlock.size());
     double* fint = m.fint.data();
     double* ff = m.Kff.valuePtr();
     double* fp = m.Kfp.valuePtr();
@@ -572,75 +571,74 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
     bool failed = false;
     std::exception_ptr error;
 
-    // Independent element evaluations; thread-local buffers, atomic scatter
-    // into the fixed pattern. Exceptions cannot leave a parallel region:
-    // the first one is kept and rethrown after the loop.
+    // Independent element evaluations with thread-local buffers. The
+    // elements of one colour share no dof, so their scatter needs no
+    // atomics and the sums do not depend on the thread count. Exceptions
+    // cannot leave a parallel region: the first one is kept and rethrown
+    // after the loop.
+    const auto& colours = m.pattern.colours();
     #pragma omp parallel
     {
         matX X, u, Ke;
         vecX fe;
-        #pragma omp for schedule(dynamic, 32) reduction(+:materialFailures)
-        for (int e = 0; e < nElements; ++e)
+        for (const std::vector<int>& elements : colours)
         {
-            bool skip;
-            #pragma omp atomic read
-            skip = failed;
-            if (skip) continue;
-            try
+            const int nc = int(elements.size());
+            #pragma omp for schedule(static) reduction(+:materialFailures)
+            for (int k = 0; k < nc; ++k)
             {
-                const impl::blockData& b = m.blocks[m.elemBlock[e]];
-                m.gather(e, X, u);
-                const bool ok = b.kernel->compute
-                (
-                    X, u, *b.mat, m.committed[e], m.trial[e], fe,
-                    wantTangent ? &Ke : nullptr, e
-                );
-                if (!ok)
+                bool skip;
+                #pragma omp atomic read
+                skip = failed;
+                if (skip) continue;
+                const int e = elements[k];
+                try
                 {
-                    ++materialFailures;
-                    continue;
-                }
+                    const impl::blockData& b = m.blocks[m.elemBlock[e]];
+                    m.gather(e, X, u);
+                    const bool ok = b.kernel->compute
+                    (
+                        X, u, *b.mat, m.committed[e], m.trial[e], fe,
+                        wantTangent ? &Ke : nullptr, e
+                    );
+                    if (!ok)
+                    {
+                        ++materialFailures;
+                        continue;
+                    }
 
-                const elementBlock& blk = m.mesh.blocks[m.elemBlock[e]];
-                const int* nodes = blk.nodes(m.elemLocal[e]);
-                const int nDim = m.nDim;
-                for (int a = 0; a < blk.nodesPerElement; ++a)
-                {
-                    for (int i = 0; i < nDim; ++i)
+                    const elementBlock& blk = m.mesh.blocks[m.elemBlock[e]];
+                    const int* nodes = blk.nodes(m.elemLocal[e]);
+                    const int nDim = m.nDim;
+                    for (int a = 0; a < blk.nodesPerElement; ++a)
                     {
-                        #pragma omp atomic
-                        fint[nodes[a]*nDim + i] += fe(a*nDim + i);
-                    }
-                }
-                if (wantTangent)
-                {
-                    const int n = m.pattern.nElementDofs(e);
-                    const int* code = m.pattern.scatter(e);
-                    const double* k = Ke.data();
-                    for (int ab = 0; ab < n*n; ++ab)
-                    {
-                        const int c = code[ab];
-                        if (c >= 0)
+                        for (int i = 0; i < nDim; ++i)
                         {
-                            #pragma omp atomic
-                            ff[c] += k[ab];
+                            fint[nodes[a]*nDim + i] += fe(a*nDim + i);
                         }
-                        else if (c <= -2)
+                    }
+                    if (wantTangent)
+                    {
+                        const int n = m.pattern.nElementDofs(e);
+                        const int* code = m.pattern.scatter(e);
+                        const double* ke = Ke.data();
+                        for (int ab = 0; ab < n*n; ++ab)
                         {
-                            #pragma omp atomic
-                            fp[-2 - c] += k[ab];
+                            const int c = code[ab];
+                            if (c >= 0) ff[c] += ke[ab];
+                            else if (c <= -2) fp[-2 - c] += ke[ab];
                         }
                     }
                 }
-            }
-            catch (...)
-            {
-                #pragma omp critical(formSolidModelError)
+                catch (...)
                 {
-                    if (!error) error = std::current_exception();
+                    #pragma omp critical(formSolidModelError)
+                    {
+                        if (!error) error = std::current_exception();
+                    }
+                    #pragma omp atomic write
+                    failed = true;
                 }
-                #pragma omp atomic write
-                failed = true;
             }
         }
     }

@@ -4,6 +4,7 @@
 #include "solidModel.H"
 #include "testElements.H"
 #include <gtest/gtest.h>
+#include <omp.h>
 
 using namespace form;
 using namespace form::test;
@@ -365,4 +366,133 @@ TEST(solidModel, BadInputThrowsInputErrorNamingTheEntry)
     }
     EXPECT_THROW(m.addConstraint({0}, 2), inputError);
     EXPECT_THROW(m.addConstraint({42}, 0), inputError);
+}
+
+
+// Real elements: Q9P3 / Q4 with neo-Hookean material, a dead traction and a
+// follower pressure (unsymmetric load stiffness). The assembled K_ff and
+// K_fp must be the derivative of -r_f with respect to the free and the
+// prescribed dofs (central differences through setDisplacement).
+#include "structuredQuadMesh.H"
+
+namespace
+{
+
+void checkQuadTangent(const std::string& element, int nodes)
+{
+    feMesh mesh = structuredQuadMesh
+    (
+        {{{0, 0}, {4, 0.5}, {4, 2}, {0, 1.5}}}, 3, 2, nodes, element, "rubber"
+    );
+    const std::vector<int> left = mesh.nodeSets.at("left");
+    auto mat = material::New("neoHookean", {{"E", 10}, {"nu", 0.45}});
+    solidModel model
+    (
+        mesh, analysisType::planeStrain, {{"rubber", std::move(mat)}}
+    );
+    model.addConstraint(left, 0);
+    model.addConstraint(left, 1);
+    // Left edge moved by a prescribed function (nonzero K_fp columns);
+    // the ends of the pressure-loaded top edge stay free in y, where the
+    // follower load stiffness is unsymmetric
+    model.addConstraint({left[0]}, 0, [](double t) { return -0.1*t; });
+    model.addTraction("right", [](double t)
+    {
+        return Eigen::Vector2d(0, 0.3*t);
+    });
+    model.addPressure("top", [](double t) { return 0.5*t; });
+    model.finalise();
+    ASSERT_TRUE(model.unsymmetric());
+
+    // A deformed state
+    vecX U(model.nDofs());
+    for (int n = 0; n < model.mesh().nNodes(); ++n)
+    {
+        const double x = model.mesh().X(n, 0), y = model.mesh().X(n, 1);
+        U(2*n) = 0.05*x + 0.02*y*y;
+        U(2*n + 1) = 0.03*x*x - 0.04*y;
+    }
+    model.setDisplacement(U);
+    vecX r;
+    ASSERT_TRUE(model.evaluate(1, r, true));
+    const matX Kff = matX(model.Kff());
+    const matX Kfp = matX(model.Kfp());
+    EXPECT_GT((Kff - Kff.transpose()).norm(), 1e-6*Kff.norm());
+
+    const double h = 1e-6;
+    const auto& f = model.freeDofs();
+    const auto& p = model.prescribedDofs();
+    double errFF = 0, errFP = 0;
+    for (int d = 0; d < model.nDofs(); ++d)
+    {
+        vecX Up = U, Um = U;
+        Up(d) += h;
+        Um(d) -= h;
+        vecX rp, rm;
+        model.setDisplacement(Up);
+        ASSERT_TRUE(model.evaluate(1, rp, false));
+        model.setDisplacement(Um);
+        ASSERT_TRUE(model.evaluate(1, rm, false));
+        const vecX col = -(rp - rm)/(2*h);
+        const auto fi = std::find(f.begin(), f.end(), d);
+        if (fi != f.end())
+        {
+            errFF = std::max(errFF, (col - Kff.col(fi - f.begin())).norm());
+        }
+        else
+        {
+            const auto pi = std::find(p.begin(), p.end(), d);
+            errFP = std::max(errFP, (col - Kfp.col(pi - p.begin())).norm());
+        }
+    }
+    EXPECT_LT(errFF, 1e-6*Kff.norm()) << element;
+    EXPECT_LT(errFP, 1e-6*Kff.norm()) << element;
+    EXPECT_GT(Kfp.norm(), 1e-3*Kff.norm());
+}
+
+} // namespace
+
+
+TEST(solidModel, Q9P3TangentWithFollowerPressureMatchesFiniteDifferences)
+{
+    checkQuadTangent("Q9P3", 9);
+}
+
+
+TEST(solidModel, Q4TangentWithFollowerPressureMatchesFiniteDifferences)
+{
+    checkQuadTangent("Q4", 4);
+}
+
+
+TEST(solidModel, AssemblyIsIdenticalForAnyThreadCount)
+{
+    feMesh mesh = structuredQuadMesh
+    (
+        {{{0, 0}, {48, 44}, {48, 60}, {0, 44}}}, 12, 10, 9, "Q9P3", "m"
+    );
+    const std::vector<int> left = mesh.nodeSets.at("left");
+    auto mat = material::New("neoHookean", {{"E", 10}, {"nu", 0.49}});
+    solidModel model(mesh, analysisType::planeStrain, {{"m", std::move(mat)}});
+    model.addConstraint(left, 0);
+    model.addConstraint(left, 1);
+    model.addPressure("top", [](double) { return 0.01; });
+    model.finalise();
+    vecX U(model.nDofs());
+    for (int d = 0; d < U.size(); ++d) U(d) = 0.01*std::sin(0.1*d);
+    model.setDisplacement(U);
+
+    const int threads = omp_get_max_threads();
+    vecX r1, r2;
+    omp_set_num_threads(1);
+    ASSERT_TRUE(model.evaluate(0, r1, true));
+    const vecX K1 = Eigen::Map<const vecX>
+        (model.Kff().valuePtr(), model.Kff().nonZeros());
+    omp_set_num_threads(std::max(2, threads));
+    ASSERT_TRUE(model.evaluate(0, r2, true));
+    const vecX K2 = Eigen::Map<const vecX>
+        (model.Kff().valuePtr(), model.Kff().nonZeros());
+    omp_set_num_threads(threads);
+    EXPECT_EQ((r1 - r2).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ((K1 - K2).cwiseAbs().maxCoeff(), 0.0);
 }

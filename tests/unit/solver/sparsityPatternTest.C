@@ -129,3 +129,41 @@ TEST(sparsityPattern, ScatterCodesPointAtTheRightEntries)
     }
     EXPECT_EQ(pattern.memory(), (9 + 16 + 9)*sizeof(int));
 }
+
+
+TEST(sparsityPattern, ColoursCoverAllElementsAndShareNoDof)
+{
+    // 6 x 4 grid of 4-node "elements" with 1 dof per node
+    std::vector<std::size_t> offsets{0};
+    std::vector<int> dofs;
+    for (int j = 0; j < 4; ++j)
+    {
+        for (int i = 0; i < 6; ++i)
+        {
+            const int n0 = i + 7*j;
+            dofs.insert(dofs.end(), {n0, n0 + 1, n0 + 8, n0 + 7});
+            offsets.push_back(dofs.size());
+        }
+    }
+    dofNumbering n;
+    n.build(std::vector<bool>(7*5, false));
+    sparsityPattern pattern;
+    sparseMatrix Kff, Kfp;
+    pattern.build(n, offsets, dofs, Kff, Kfp);
+
+    EXPECT_EQ(pattern.colours().size(), 4u);   // optimal for a quad grid
+    std::vector<int> seen(24, 0);
+    for (const auto& colour : pattern.colours())
+    {
+        std::set<int> used;
+        for (int e : colour)
+        {
+            ++seen[e];
+            for (std::size_t k = offsets[e]; k < offsets[e + 1]; ++k)
+            {
+                EXPECT_TRUE(used.insert(dofs[k]).second) << "element " << e;
+            }
+        }
+    }
+    for (int e = 0; e < 24; ++e) EXPECT_EQ(seen[e], 1) << e;
+}
