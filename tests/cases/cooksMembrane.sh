@@ -40,25 +40,32 @@ c=$(caseCopy cooksMembrane/neoHookean)
 run "$c" || fail "neo-Hookean run (see $c/log.formFoam)"
 tipSteps=$(summaryValue "$c" tipDisplacementY)
 checkClose "neo-Hookean reaction = -100" "$(summaryValue "$c" clampReactionY)" -100 1e-6
-# Rate from the last three residual norms of each step that took >= 4
-# iterations: q = log(r_k+1/r_k)/log(r_k/r_k-1); report the median
+# Convergence order from the energy column |dU.r| (relative to the step's
+# first iteration; it squares like the residual): q = log(e+/e)/log(e/e-)
+# for the last decreasing triple of each step above round-off (1e-17),
+# median over the steps. The force residual itself reaches a round-off
+# floor (~1e-8 here, machine precision times the bulk modulus) and cannot
+# show the rate at the end of a step.
 rate=$(awk '
     /^Step / { flush(); next }
-    match($0, /\|r\| *[0-9.eE+-]+/) {
-        v = substr($0, RSTART, RLENGTH); sub(/\|r\| */, "", v); r[n++] = v + 0
+    match($0, /energy [0-9.eE+-]+/) {
+        v = substr($0, RSTART + 7, RLENGTH - 7); e[n++] = v + 0
     }
-    function flush(   q) {
-        if (n >= 4 && r[n-1] > 0 && r[n-2] > 0 && r[n-3] > 0 && r[n-2] < r[n-3]) {
-            q = log(r[n-1]/r[n-2])/log(r[n-2]/r[n-3]); rates[m++] = q
+    function flush(   k, q) {
+        q = ""
+        for (k = 1; k + 1 < n; ++k) {
+            if (e[k+1] > 1e-17 && e[k+1] < e[k] && e[k] < e[k-1])
+                q = log(e[k+1]/e[k])/log(e[k]/e[k-1])
         }
+        if (q != "") print q
         n = 0
     }
-    END { flush(); for (i = 0; i < m; ++i) print rates[i] }' "$c/log.formFoam" \
+    END { flush() }' "$c/log.formFoam" \
     | sort -g | awk '{ v[NR] = $1 } END { print (NR ? v[int((NR + 1)/2)] : "none") }')
-if awk -v q="$rate" 'BEGIN { exit !(q != "none" && q > 1.7 && q < 2.6) }'; then
-    pass "neo-Hookean Newton rate $rate (quadratic: ~2)"
+if awk -v q="$rate" 'BEGIN { exit !(q != "none" && q > 1.6 && q < 2.6) }'; then
+    pass "neo-Hookean Newton convergence order $rate (quadratic: ~2)"
 else
-    fail "neo-Hookean Newton rate $rate (expected ~2)"
+    fail "neo-Hookean Newton convergence order $rate (expected ~2)"
 fi
 
 # 5. One huge load step: must be cut back automatically, same answer
