@@ -1,5 +1,4 @@
 #include "linearElastic.H"
-#include <limits>
 
 namespace form
 {
@@ -15,23 +14,9 @@ addMaterialToRegistry<linearElastic> addLinearElastic
 }
 
 
-std::vector<parameterSpec> linearElastic::parameterSpecs()
-{
-    const double inf = std::numeric_limits<double>::infinity();
-    return
-    {
-        {"E", 0, inf, false, false, "Young's modulus"},
-        {"nu", -1, 0.5, false, false, "Poisson's ratio"}
-    };
-}
-
-
 linearElastic::linearElastic(const parameterMap& p)
 :
-    E_(checkedParameter(p, parameterSpecs(), "E")),
-    nu_(checkedParameter(p, parameterSpecs(), "nu")),
-    G_(E_/(2*(1 + nu_))),
-    kappa_(E_/(3*(1 - 2*nu_)))
+    isotropicElastic(p)
 {}
 
 

@@ -1,6 +1,5 @@
 #include "neoHookean.H"
 #include <cmath>
-#include <limits>
 
 namespace form
 {
@@ -16,23 +15,9 @@ addMaterialToRegistry<neoHookean> addNeoHookean
 }
 
 
-std::vector<parameterSpec> neoHookean::parameterSpecs()
-{
-    const double inf = std::numeric_limits<double>::infinity();
-    return
-    {
-        {"E", 0, inf, false, false, "Young's modulus (small strain)"},
-        {"nu", -1, 0.5, false, false, "Poisson's ratio (small strain)"}
-    };
-}
-
-
 neoHookean::neoHookean(const parameterMap& p)
 :
-    E_(checkedParameter(p, parameterSpecs(), "E")),
-    nu_(checkedParameter(p, parameterSpecs(), "nu")),
-    G_(E_/(2*(1 + nu_))),
-    kappa_(E_/(3*(1 - 2*nu_)))
+    isotropicElastic(p)
 {}
 
 

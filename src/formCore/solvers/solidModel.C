@@ -8,6 +8,7 @@ Description
 #include "solidModel.H"
 #include "sparsityPattern.H"
 #include "formError.H"
+#include "wallClock.H"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,19 +16,6 @@ Description
 
 namespace form
 {
-
-namespace
-{
-
-double seconds(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double>
-    (
-        std::chrono::steady_clock::now() - start
-    ).count();
-}
-
-} // namespace
 
 
 struct solidModel::impl
@@ -645,12 +633,12 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
 
     if (error)
     {
-        m.times.assembly += seconds(start);
+        m.times.assembly += secondsSince(start);
         std::rethrow_exception(error);
     }
     if (materialFailures)
     {
-        m.times.assembly += seconds(start);
+        m.times.assembly += secondsSince(start);
         return false;
     }
 
@@ -663,7 +651,7 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
         const int d = m.numbering.freeDofs[k];
         residual(k) = m.fext(d) - m.fint(d);
     }
-    m.times.assembly += seconds(start);
+    m.times.assembly += secondsSince(start);
     return residual.allFinite();
 }
 
@@ -821,7 +809,7 @@ std::vector<elementResult> solidModel::elementResults() const
             }
         }
     }
-    impl_->times.output += seconds(start);
+    impl_->times.output += secondsSince(start);
     if (error) std::rethrow_exception(error);
     return results;
 }

@@ -8,6 +8,7 @@ Description
 \*---------------------------------------------------------------------------*/
 #include "staticSolver.H"
 #include "formError.H"
+#include "wallClock.H"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,14 +21,6 @@ namespace form
 
 namespace
 {
-
-double seconds(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double>
-    (
-        std::chrono::steady_clock::now() - start
-    ).count();
-}
 
 std::string fmt(const char* format, double a)
 {
@@ -134,14 +127,14 @@ vecX staticSolver::solveLinear(const vecX& rhs)
     }
     catch (...)
     {
-        times.factorisation += seconds(start);
+        times.factorisation += secondsSince(start);
         throw;
     }
-    times.factorisation += seconds(start);
+    times.factorisation += secondsSince(start);
 
     start = std::chrono::steady_clock::now();
     vecX dU = solver_.solve(rhs);
-    times.solve += seconds(start);
+    times.solve += secondsSince(start);
     if (!dU.allFinite())
     {
         throw stepFailure("linear solve returned non-finite values");
