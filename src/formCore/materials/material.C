@@ -6,6 +6,7 @@ Description
     of form::material (see material.H).
 \*---------------------------------------------------------------------------*/
 #include "material.H"
+#include "materialInput.H"
 #include "formError.H"
 #include <cmath>
 #include <limits>
@@ -100,7 +101,7 @@ std::string material::validTypes()
 std::unique_ptr<material> material::New
 (
     const std::string& type,
-    const parameterMap& parameters
+    const materialInput& input
 )
 {
     const auto it = registry().find(type);
@@ -114,9 +115,19 @@ std::unique_ptr<material> material::New
     }
     for (const auto& spec : it->second.parameters)
     {
-        checkedParameter(parameters, spec);
+        input.scalar(spec);
     }
-    return it->second.factory(parameters);
+    return it->second.factory(input);
+}
+
+
+std::unique_ptr<material> material::New
+(
+    const std::string& type,
+    const parameterMap& parameters
+)
+{
+    return New(type, materialInput(parameters));
 }
 
 

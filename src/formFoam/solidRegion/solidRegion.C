@@ -6,18 +6,76 @@
 #include "OSspecific.H"
 #include "pointFields.H"
 #include "pointLocator.H"
+#include "materialInput.H"
+#include "Tuple2.H"
 #include "volFields.H"
 #include "emptyFvPatch.H"
 #include "wedgeFvPatch.H"
 
 // * * * * * * * * * * * * * * * Private Functions  * * * * * * * * * * * * //
 
+namespace
+{
+
+// Copy an OpenFOAM dictionary into formCore's materialInput tree: a single
+// number -> scalar, a single word -> word, a list of (x y) pairs -> table,
+// a sub-dictionary -> sub-tree. Anything else is an error naming the entry.
+void toMaterialInput
+(
+    const Foam::dictionary& dict,
+    form::materialInput& in,
+    const std::string& path
+)
+{
+    using namespace Foam;
+    in.path = path;
+    for (const entry& e : dict)
+    {
+        const std::string key = e.keyword();
+        const std::string sub = path.empty() ? key : path + "/" + key;
+        if (e.isDict())
+        {
+            toMaterialInput(e.dict(), in.dicts[key], sub);
+            continue;
+        }
+        ITstream& is = e.stream();
+        if (is.size() == 1 && is[0].isNumber())
+        {
+            in.scalars[key] = is[0].number();
+        }
+        else if (is.size() == 1 && is[0].isWord())
+        {
+            in.words[key] = is[0].wordToken();
+        }
+        else if (is.size() > 1 && is[0].isPunctuation())
+        {
+            List<Tuple2<scalar, scalar>> pairs;
+            is >> pairs;
+            form::materialInput::table& t = in.tables[key];
+            for (const auto& xy : pairs)
+            {
+                t.push_back({xy.first(), xy.second()});
+            }
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << sub.c_str() << "' in " << dict.name()
+                << ": expected a number, a word, a list of (x y) pairs or a"
+                << " sub-dictionary"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+} // anonymous namespace
+
+
 void Foam::solidRegion::readMaterial(const dictionary& dict)
 {
     materialType_ = dict.get<word>("type");
     const auto& reg = form::material::registry();
-    const auto iter = reg.find(materialType_);
-    if (iter == reg.end())
+    if (reg.find(materialType_) == reg.end())
     {
         FatalIOErrorInFunction(dict)
             << "Unknown material type '" << materialType_ << "' in "
@@ -25,17 +83,11 @@ void Foam::solidRegion::readMaterial(const dictionary& dict)
             << form::material::validTypes().c_str()
             << exit(FatalIOError);
     }
-    wordList allowed(1, word("type"));
-    form::parameterMap params;
-    for (const form::parameterSpec& spec : iter->second.parameters)
-    {
-        allowed.append(word(spec.name));
-        params[spec.name] = dict.get<scalar>(word(spec.name));
-    }
-    checkKeywords(dict, allowed);
+    form::materialInput input;
+    toMaterialInput(dict, input, "");
     try
     {
-        material_ = form::material::New(materialType_, params);
+        material_ = form::material::New(materialType_, input);
     }
     catch (const form::inputError& err)
     {

@@ -1,6 +1,6 @@
 // material base class: run-time selection, parameter range checks, initial
 // state, default (Hencky) equivalent strain.
-#include "material.H"
+#include "materialInput.H"
 #include "formError.H"
 #include "kernelTestTools.H"
 #include <gtest/gtest.h>
