@@ -442,6 +442,36 @@ void solidModel::addConstraint
 }
 
 
+void solidModel::addNodalConstraint
+(
+    const std::vector<int>& nodes,
+    int component,
+    const std::function<double(int, double)>& value
+)
+{
+    impl& m = *impl_;
+    const bool wasFinalised = m.finalised;
+    m.finalised = false;
+    for (int node : nodes)
+    {
+        addConstraint
+        (
+            {node},
+            component,
+            [value, node](double t) { return value(node, t); }
+        );
+    }
+    m.finalised = wasFinalised;
+    if (m.finalised) m.build();
+}
+
+
+bool solidModel::constrained(int dof) const
+{
+    return impl_->constraints.count(dof) > 0;
+}
+
+
 void solidModel::addTraction(const std::string& faceSet, vectorTimeFunction t)
 {
     impl& m = *impl_;
@@ -506,7 +536,15 @@ int solidModel::nPrescribedDofs() const
     return impl_->numbering.nPrescribed();
 }
 
-bool solidModel::unsymmetric() const { return !impl_->pressures.empty(); }
+bool solidModel::unsymmetric() const
+{
+    if (!impl_->pressures.empty()) return true;
+    for (const auto& b : impl_->blocks)
+    {
+        if (!b.mat->symmetricTangent()) return true;
+    }
+    return false;
+}
 
 int solidModel::patternRevision() const { return impl_->revision; }
 
@@ -721,6 +759,42 @@ void solidModel::setDisplacement(const vecX& U)
         );
     }
     m.U = U;
+}
+
+
+const std::vector<std::vector<materialState>>&
+solidModel::materialStates() const
+{
+    return impl_->committed;
+}
+
+
+void solidModel::setMaterialStates
+(
+    const std::vector<std::vector<materialState>>& states
+)
+{
+    impl& m = *impl_;
+    bool ok = states.size() == m.committed.size();
+    for (std::size_t e = 0; ok && e < states.size(); ++e)
+    {
+        ok = states[e].size() == m.committed[e].size();
+        for (std::size_t q = 0; ok && q < states[e].size(); ++q)
+        {
+            ok = states[e][q].history.size()
+              == m.committed[e][q].history.size();
+        }
+    }
+    if (!ok)
+    {
+        throw numericalError
+        (
+            "solidModel::setMaterialStates: the states do not match the"
+            " model's elements, quadrature points or material history"
+        );
+    }
+    m.committed = states;
+    m.trial = states;
 }
 
 

@@ -4,6 +4,7 @@
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "clockTime.H"
+#include <fstream>
 #include <iostream>
 
 // * * * * * * * * * * * * * * * Private Functions  * * * * * * * * * * * * //
@@ -83,10 +84,291 @@ void Foam::formScene::printScene() const
 }
 
 
+void Foam::formScene::readSchedule()
+{
+    const fileName path = runTime_.path()/"constant"/"processSchedule";
+    if (!isFile(path))
+    {
+        schedule_.push_back
+        (
+            {"run", steps_.startTime, steps_.endTime, steps_.deltaT,
+             steps_.maxDeltaT, dictionary()}
+        );
+        return;
+    }
+    IOdictionary sd
+    (
+        IOobject
+        (
+            "processSchedule", runTime_.constant(), runTime_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    checkKeywords(sd, {"steps"});
+    const dictionary& steps = sd.subDict("steps");
+    scalar t0 = steps_.startTime;
+    for (const entry& e : steps)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(steps)
+                << "Process step '" << e.keyword() << "' in " << steps.name()
+                << " must be a dictionary" << exit(FatalIOError);
+        }
+        const dictionary& d = e.dict();
+        checkKeywords
+        (
+            d, {"endTime", "deltaT", "maxDeltaT", "release", "hold", "prescribe"}
+        );
+        processStep ps;
+        ps.name = e.keyword();
+        ps.startTime = t0;
+        ps.endTime = d.get<scalar>("endTime");
+        ps.deltaT = d.getOrDefault<scalar>("deltaT", steps_.deltaT);
+        ps.maxDeltaT = d.getOrDefault<scalar>("maxDeltaT", ps.deltaT);
+        if (!(ps.endTime > t0) || !(ps.deltaT > 0) || !(ps.maxDeltaT > 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "Process step '" << ps.name << "' in " << d.name()
+                << ": endTime must be after the previous step's end (" << t0
+                << ") and deltaT, maxDeltaT positive" << exit(FatalIOError);
+        }
+        ps.actions = d;
+        for (const word key : {"release", "hold"})
+        {
+            if (!d.found(key)) continue;
+            const entry& a = d.lookupEntry(key, keyType::LITERAL);
+            if (a.isDict()) continue;
+            d.get<wordList>(key);   // a list of patch names
+        }
+        t0 = ps.endTime;
+        schedule_.push_back(ps);
+    }
+    if (schedule_.empty() || mag(t0 - steps_.endTime) > 1e-9*mag(t0) + 1e-12)
+    {
+        FatalIOErrorInFunction(steps)
+            << "The last process step in " << steps.name() << " ends at "
+            << t0 << " but endTime in system/controlDict is "
+            << steps_.endTime << "; they must agree" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::formScene::applyActions(const processStep& step)
+{
+    solidRegion& s = solids_[0];
+    const dictionary& d = step.actions;
+    const auto components = [&](const word& key, const entry& a, word& patch)
+    {
+        patch = a.keyword();
+        labelList comps;
+        wordList names;
+        a.stream() >> names;
+        for (const word& c : names)
+        {
+            comps.append(planeComponent(c, d));
+        }
+        (void)key;
+        return comps;
+    };
+    for (const word key : {"release", "hold"})
+    {
+        if (!d.found(key)) continue;
+        const entry& a = d.lookupEntry(key, keyType::LITERAL);
+        std::vector<std::pair<word, labelList>> targets;
+        if (a.isDict())
+        {
+            for (const entry& pe : a.dict())
+            {
+                word patch;
+                labelList comps = components(key, pe, patch);
+                targets.push_back({patch, comps});
+            }
+        }
+        else
+        {
+            for (const word& patch : d.get<wordList>(key))
+            {
+                targets.push_back({patch, labelList({0, 1})});
+            }
+        }
+        for (const auto& t : targets)
+        {
+            Info<< "    " << key.c_str() << " " << t.first << " components "
+                << t.second << nl;
+            if (key == "release")
+            {
+                s.release(t.first, t.second, d);
+            }
+            else
+            {
+                s.hold(t.first, t.second, d);
+            }
+        }
+    }
+    if (d.found("prescribe"))
+    {
+        const dictionary& pd = d.subDict("prescribe");
+        for (const entry& pe : pd)
+        {
+            if (!pe.isDict())
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Entry '" << pe.keyword() << "' in " << pd.name()
+                    << " must be a boundary-condition dictionary"
+                    << exit(FatalIOError);
+            }
+            const word type = pe.dict().get<word>("type");
+            if (!solidRegion::conditionTypes().found(type))
+            {
+                FatalIOErrorInFunction(pe.dict())
+                    << "Unknown boundary condition type '" << type << "' in "
+                    << pe.dict().name() << nl << "    Valid types: "
+                    << solidRegion::conditionTypes() << exit(FatalIOError);
+            }
+            Info<< "    prescribe " << pe.keyword() << " " << type << nl;
+            s.applyCondition(pe.keyword(), pe.dict());
+        }
+    }
+}
+
+
+void Foam::formScene::readSummary()
+{
+    if (!solution_.found("summary")) return;
+    const dictionary& sd = solution_.subDict("summary");
+    for (const entry& e : sd)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(sd)
+                << "summary entry '" << e.keyword()
+                << "' must be a dictionary" << exit(FatalIOError);
+        }
+        summaryEntry se;
+        se.name = e.keyword();
+        se.dict = e.dict();
+        const dictionary& ed = se.dict;
+        const word type = ed.get<word>("type");
+        const wordList common{"type", "scale", "statistic", "time"};
+        wordList keys(common);
+        if (type == "displacement" || type == "position")
+        {
+            keys.append(wordList{"point", "component"});
+        }
+        else if (type == "reaction")
+        {
+            keys.append(wordList{"patch", "component"});
+        }
+        else if (type == "circleRadius")
+        {
+            keys.append(word("patches"));
+        }
+        else
+        {
+            FatalIOErrorInFunction(ed)
+                << "Unknown summary type '" << type << "' in " << ed.name()
+                << nl << "    Valid types: displacement position reaction"
+                << " circleRadius" << exit(FatalIOError);
+        }
+        checkKeywords(ed, keys);
+        se.statistic = ed.getOrDefault<word>("statistic", "final");
+        if (!wordList{"final", "max", "min"}.found(se.statistic))
+        {
+            FatalIOErrorInFunction(ed)
+                << "Entry 'statistic' in " << ed.name() << ": unknown '"
+                << se.statistic << "'; valid: final max min"
+                << exit(FatalIOError);
+        }
+        se.scale = ed.getOrDefault<scalar>("scale", 1);
+        se.atTime = ed.found("time");
+        if (se.atTime) se.time = ed.get<scalar>("time");
+        summary_.push_back(se);
+        // Validate points and patches now, not at the end of the run
+        evaluate(summary_.back());
+    }
+}
+
+
+Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
+{
+    const solidRegion& s = solids_[0];
+    const dictionary& ed = e.dict;
+    const word type = ed.get<word>("type");
+    scalar value = 0;
+    if (type == "circleRadius")
+    {
+        const wordList patches = ed.get<wordList>("patches");
+        for (const word& p : patches) value += s.circleRadius(p, ed);
+        value /= max(label(1), patches.size());
+    }
+    else
+    {
+        const label comp = planeComponent(ed.get<word>("component"), ed);
+        if (type == "displacement")
+        {
+            value = s.displacementAt(ed.get<point>("point"), comp, ed);
+        }
+        else if (type == "position")
+        {
+            const point p = ed.get<point>("point");
+            const Eigen::Vector2d X = s.feMesh().toPlane(p);
+            value = X(comp) + s.displacementAt(p, comp, ed);
+        }
+        else
+        {
+            value = s.reaction(ed.get<word>("patch"), comp, ed);
+        }
+    }
+    return e.scale*value;
+}
+
+
+void Foam::formScene::recordSummary(scalar time, bool first)
+{
+    const fileName dir = runTime_.path()/"postProcessing";
+    mkDir(dir);
+    const bool append = !first && isFile(dir/"history.dat");
+    std::ofstream os
+    (
+        dir/"history.dat", append ? std::ios::app : std::ios::trunc
+    );
+    os.precision(10);
+    if (!append)
+    {
+        os << "# time";
+        for (const summaryEntry& e : summary_) os << ' ' << e.name;
+        os << '\n';
+    }
+    os << time;
+    for (summaryEntry& e : summary_)
+    {
+        const scalar v = evaluate(e);
+        os << ' ' << v;
+        if (e.atTime && mag(time - e.time) > 1e-9*max(mag(e.time), 1.0))
+        {
+            continue;
+        }
+        if
+        (
+            !e.set || e.statistic == "final"
+         || (e.statistic == "max" && v > e.value)
+         || (e.statistic == "min" && v < e.value)
+        )
+        {
+            e.value = v;
+        }
+        e.set = true;
+    }
+    os << '\n';
+}
+
+
 void Foam::formScene::writeSummary
 (
-    const form::staticSolver& solver,
+    label newtonIterations,
     label nSteps,
+    label cutbacks,
     scalar wallTime
 ) const
 {
@@ -104,48 +386,29 @@ void Foam::formScene::writeSummary
             << "}" << nl << nl;
         os.precision(10);
 
-        if (solution_.found("summary"))
+        for (const summaryEntry& e : summary_)
         {
-            const dictionary& sd = solution_.subDict("summary");
-            for (const entry& e : sd)
+            if (!e.set)
             {
-                if (!e.isDict())
-                {
-                    FatalIOErrorInFunction(sd)
-                        << "summary entry '" << e.keyword()
-                        << "' must be a dictionary" << exit(FatalIOError);
-                }
-                const dictionary& ed = e.dict();
-                const word type = ed.get<word>("type");
-                const label comp = planeComponent(ed.get<word>("component"), ed);
-                scalar value = 0;
-                if (type == "displacement")
-                {
-                    checkKeywords(ed, {"type", "point", "component"});
-                    value = s.displacementAt(ed.get<point>("point"), comp, ed);
-                }
-                else if (type == "reaction")
-                {
-                    checkKeywords(ed, {"type", "patch", "component"});
-                    value = s.reaction(ed.get<word>("patch"), comp, ed);
-                }
-                else
-                {
-                    FatalIOErrorInFunction(ed)
-                        << "Unknown summary type '" << type << "' in "
-                        << ed.name() << nl
-                        << "    Valid types: displacement reaction"
-                        << exit(FatalIOError);
-                }
-                os.writeEntry(e.keyword(), value);
-                Info<< "    " << e.keyword() << " = " << value << nl;
+                FatalIOErrorInFunction(e.dict)
+                    << "summary entry '" << e.name << "' in " << e.dict.name()
+                    << " was never evaluated: no converged step ended at its"
+                    << " time " << e.time << exit(FatalIOError);
             }
+            os.writeEntry(e.name, e.value);
+            Info<< "    " << e.name << " = " << e.value << nl;
         }
         os.writeEntry("elementType", s.elementType());
         os.writeEntry("nElements", s.feMesh().feMesh().nElements());
         os.writeEntry("nDofs", s.model().nFreeDofs());
         os.writeEntry("steps", nSteps);
-        os.writeEntry("newtonIterations", solver.totalIterations());
+        os.writeEntry("newtonIterations", newtonIterations);
+        os.writeEntry
+        (
+            "newtonIterationsPerStep",
+            scalar(newtonIterations)/max(label(1), nSteps)
+        );
+        os.writeEntry("cutbacks", cutbacks);
         os.writeEntry("wallTime", wallTime);
     }
     Foam::mv(tmp, dir/"summary");
@@ -215,6 +478,9 @@ Foam::formScene::formScene(Time& runTime)
             << " or auto" << exit(FatalIOError);
     }
 
+    readSchedule();
+    readSummary();
+
     if (steps_.startTime > 0 && solids_[0].readState(runTime.timeName()))
     {
         solids_[0].model().commit();
@@ -230,10 +496,6 @@ void Foam::formScene::run()
 {
     printScene();
     solidRegion& solid = solids_[0];
-    form::staticSolver solver
-    (
-        solid.model(), *linearSolver_, newton_, steps_, std::cout
-    );
 
     const word writeControl =
         runTime_.controlDict().getOrDefault<word>("writeControl", "timeStep");
@@ -242,6 +504,8 @@ void Foam::formScene::run()
     const clockTime clock;
     scalar nextWrite = steps_.startTime + writeInterval;
     label nSteps = 0;
+    label nIterations = 0;
+    label nCutbacks = 0;
     scalar lastTime = steps_.startTime;
 
     const auto writeNow = [&](scalar t, label index)
@@ -253,62 +517,102 @@ void Foam::formScene::run()
         solid.model().times().output += outClock.elapsedTime();
     };
 
-    try
-    {
-        solver.run
-        (
-            [&](const form::stepReport& r)
-            {
-                ++nSteps;
-                lastTime = r.time;
-                const scalar frac =
-                    (r.time - steps_.startTime)
-                   /(steps_.endTime - steps_.startTime);
-                const scalar elapsed = clock.elapsedTime();
-                const scalar eta = frac > 0 ? elapsed*(1 - frac)/frac : 0;
-                Info<< "Step " << r.step << "  t = " << r.time
-                    << " (" << label(100*frac + 0.5) << "%)"
-                    << "  dt = " << r.deltaT
-                    << "  Newton " << r.iterations
-                    << (r.cutbacks ? "  cutbacks " : "")
-                    << (r.cutbacks ? Foam::name(r.cutbacks) : word())
-                    << "  elapsed " << elapsed << " s  ETA " << eta << " s"
-                    << endl;
+    recordSummary(steps_.startTime, true);
 
-                const bool last = r.time >= steps_.endTime - 1e-12;
-                bool doWrite = last;
-                if (writeControl == "timeStep")
-                {
-                    doWrite = doWrite || (nSteps % label(writeInterval) == 0);
-                }
-                else if (r.time >= nextWrite - 1e-12*writeInterval)
-                {
-                    doWrite = true;
-                    while (nextWrite <= r.time + 1e-12) nextWrite += writeInterval;
-                }
-                if (doWrite) writeNow(r.time, r.step);
-            }
-        );
-    }
-    catch (const form::numericalError& err)
+    for (const processStep& ps : schedule_)
     {
-        solid.model().revert();
-        // The start time directory holds the case's input: never overwrite it
-        if (lastTime > steps_.startTime)
+        // Steps that ended before a restart time were run before it
+        if (ps.endTime <= steps_.startTime + 1e-12)
         {
-            writeNow(lastTime, nSteps);
+            applyActions(ps);
+            continue;
         }
-        FatalErrorInFunction
-            << err.what() << nl
-            << "    The last converged state (t = " << lastTime
-            << ") is in its time directory; restart from it with startFrom"
-            << " latestTime after changing the step controls in"
-            << " system/solidSolution." << exit(FatalError);
+        if (schedule_.size() > 1)
+        {
+            Info<< nl << "Process step '" << ps.name << "': t = "
+                << max(ps.startTime, steps_.startTime) << " -> " << ps.endTime
+                << ", deltaT " << ps.deltaT << nl;
+        }
+        applyActions(ps);
+        if (schedule_.size() > 1) Info<< endl;
+
+        form::stepControls sc = steps_;
+        sc.startTime = max(ps.startTime, steps_.startTime);
+        sc.endTime = ps.endTime;
+        sc.deltaT = ps.deltaT;
+        sc.maxDeltaT = ps.maxDeltaT;
+        sc.minDeltaT = min(steps_.minDeltaT, ps.deltaT);
+        form::staticSolver solver
+        (
+            solid.model(), *linearSolver_, newton_, sc, std::cout
+        );
+
+        try
+        {
+            solver.run
+            (
+                [&](const form::stepReport& r)
+                {
+                    ++nSteps;
+                    nCutbacks += r.cutbacks;
+                    lastTime = r.time;
+                    const scalar frac =
+                        (r.time - steps_.startTime)
+                       /(steps_.endTime - steps_.startTime);
+                    const scalar elapsed = clock.elapsedTime();
+                    const scalar eta = frac > 0 ? elapsed*(1 - frac)/frac : 0;
+                    Info<< "Step " << nSteps << "  t = " << r.time
+                        << " (" << label(100*frac + 0.5) << "%)"
+                        << "  dt = " << r.deltaT
+                        << "  Newton " << r.iterations
+                        << (r.cutbacks ? "  cutbacks " : "")
+                        << (r.cutbacks ? Foam::name(r.cutbacks) : word())
+                        << "  elapsed " << elapsed << " s  ETA " << eta
+                        << " s" << endl;
+                    recordSummary(r.time, false);
+
+                    const bool last = r.time >= ps.endTime - 1e-12;
+                    bool doWrite = last;
+                    if (writeControl == "timeStep")
+                    {
+                        doWrite =
+                            doWrite || (nSteps % label(writeInterval) == 0);
+                    }
+                    else if (r.time >= nextWrite - 1e-12*writeInterval)
+                    {
+                        doWrite = true;
+                        while (nextWrite <= r.time + 1e-12)
+                        {
+                            nextWrite += writeInterval;
+                        }
+                    }
+                    if (doWrite) writeNow(r.time, nSteps);
+                }
+            );
+            nIterations += solver.totalIterations();
+        }
+        catch (const form::numericalError& err)
+        {
+            solid.model().revert();
+            // The start time directory holds the case's input: never
+            // overwrite it
+            if (lastTime > steps_.startTime)
+            {
+                writeNow(lastTime, nSteps);
+            }
+            FatalErrorInFunction
+                << err.what() << nl
+                << "    The last converged state (t = " << lastTime
+                << ") is in its time directory; restart from it with"
+                << " startFrom latestTime after changing the step controls"
+                << " in system/solidSolution or constant/processSchedule."
+                << exit(FatalError);
+        }
     }
 
     const scalar wallTime = clock.elapsedTime();
     Info<< nl << "Summary" << nl;
-    writeSummary(solver, nSteps, wallTime);
+    writeSummary(nIterations, nSteps, nCutbacks, wallTime);
 
     const form::phaseTimes& t = solid.model().times();
     Info<< nl << "Time per phase (s)" << nl
@@ -318,5 +622,5 @@ void Foam::formScene::run()
         << "    output          " << t.output << nl
         << "    total (wall)    " << wallTime << nl
         << "    steps " << nSteps << ", Newton iterations "
-        << solver.totalIterations() << nl << nl << "End" << nl << endl;
+        << nIterations << nl << nl << "End" << nl << endl;
 }

@@ -96,6 +96,190 @@ void Foam::solidRegion::readMaterial(const dictionary& dict)
 }
 
 
+Foam::wordList Foam::solidRegion::conditionTypes()
+{
+    return {"fixedDisplacement", "rigidMotion", "traction", "pressure", "free"};
+}
+
+
+const std::vector<int>& Foam::solidRegion::patchNodes
+(
+    const word& patch,
+    const dictionary& dict
+) const
+{
+    const auto& sets = feMesh_->feMesh().nodeSets;
+    const auto it = sets.find(patch);
+    if (it == sets.end() || mesh_->boundaryMesh().findPatchID(patch) < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown patch '" << patch << "' of solid region '" << name_
+            << "' in " << dict.name() << nl << "    Patches: "
+            << mesh_->boundaryMesh().names() << exit(FatalIOError);
+    }
+    return it->second;
+}
+
+
+void Foam::solidRegion::release
+(
+    const word& patch,
+    const labelList& components,
+    const dictionary& dict
+)
+{
+    const std::vector<int>& nodes = patchNodes(patch, dict);
+    for (const label c : components)
+    {
+        model_->releaseConstraint(nodes, c);
+    }
+}
+
+
+void Foam::solidRegion::hold
+(
+    const word& patch,
+    const labelList& components,
+    const dictionary& dict
+)
+{
+    const std::vector<int>& nodes = patchNodes(patch, dict);
+    const form::vecX U = model_->U();
+    const int nDim = model_->nDim();
+    for (const label c : components)
+    {
+        model_->addNodalConstraint
+        (
+            nodes, c,
+            [U, nDim, c](int node, double) { return U(node*nDim + c); }
+        );
+    }
+}
+
+
+void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
+{
+    const word type = pd.get<word>("type");
+    const form::feMesh& fe = feMesh_->feMesh();
+    if (type == "free")
+    {
+        checkKeywords(pd, {"type", "value"});
+        return;
+    }
+    const std::vector<int>& nodes = patchNodes(patch, pd);
+    if (type == "fixedDisplacement")
+    {
+        checkKeywords(pd, {"type", "components", "displacement", "value"});
+        labelList comps;
+        if (pd.found("components"))
+        {
+            for (const word& c : pd.get<wordList>("components"))
+            {
+                comps.append(planeComponent(c, pd));
+            }
+        }
+        else
+        {
+            comps = labelList({0, 1});
+        }
+        std::shared_ptr<Function1<vector>> disp;
+        if (pd.found("displacement"))
+        {
+            disp.reset(Function1<vector>::New("displacement", pd).ptr());
+        }
+        for (const label c : comps)
+        {
+            form::timeFunction f = nullptr;
+            if (disp)
+            {
+                f = [disp, c](double t) { return disp->value(t)[c]; };
+            }
+            model_->addConstraint(nodes, c, f);
+        }
+    }
+    else if (type == "traction")
+    {
+        checkKeywords(pd, {"type", "traction", "value"});
+        std::shared_ptr<Function1<vector>> tr
+        (
+            Function1<vector>::New("traction", pd).ptr()
+        );
+        model_->addTraction
+        (
+            patch,
+            [tr](double t)
+            {
+                const vector v = tr->value(t);
+                return Eigen::Vector2d(v.x(), v.y());
+            }
+        );
+    }
+    else if (type == "pressure")
+    {
+        checkKeywords(pd, {"type", "pressure", "value"});
+        std::shared_ptr<Function1<scalar>> pr
+        (
+            Function1<scalar>::New("pressure", pd).ptr()
+        );
+        model_->addPressure
+        (
+            patch,
+            [pr](double t) { return pr->value(t); }
+        );
+        hasFollowerLoads_ = true;
+    }
+    else if (type == "rigidMotion")
+    {
+        // x = o + c(t) + R(theta(t)) (X - o) on the patch: a rigid rotation
+        // by theta (counter-clockwise in the FE plane) about the origin o,
+        // then a translation c; both components are prescribed
+        checkKeywords(pd, {"type", "origin", "angle", "translation", "value"});
+        const Eigen::Vector2d o = feMesh_->toPlane(pd.get<point>("origin"));
+        std::shared_ptr<Function1<scalar>> angle
+        (
+            Function1<scalar>::New("angle", pd).ptr()
+        );
+        std::shared_ptr<Function1<vector>> translation;
+        if (pd.found("translation"))
+        {
+            translation.reset(Function1<vector>::New("translation", pd).ptr());
+        }
+        const form::matX X = fe.X;
+        for (const label c : {0, 1})
+        {
+            model_->addNodalConstraint
+            (
+                nodes,
+                c,
+                [=](int node, double t)
+                {
+                    const double th = angle->value(t);
+                    const Eigen::Vector2d d = X.row(node).transpose() - o;
+                    Eigen::Matrix2d R;
+                    R << std::cos(th), -std::sin(th),
+                         std::sin(th), std::cos(th);
+                    Eigen::Vector2d u = R*d - d;
+                    if (translation)
+                    {
+                        const vector v = translation->value(t);
+                        u += Eigen::Vector2d(v.x(), v.y());
+                    }
+                    return u(c);
+                }
+            );
+        }
+    }
+    else
+    {
+        FatalIOErrorInFunction(pd)
+            << "Unknown boundary condition type '" << type
+            << "' for patch '" << patch << "' in " << pd.name() << nl
+            << "    Valid types: " << conditionTypes()
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::solidRegion::readBoundaryConditions()
 {
     const fileName path =
@@ -111,12 +295,10 @@ void Foam::solidRegion::readBoundaryConditions()
     const dictionary fieldDict(is);
     const dictionary& bf = fieldDict.subDict("boundaryField");
 
-    const wordList validTypes
-    {
-        "fixedDisplacement", "traction", "pressure", "free", "empty", "wedge"
-    };
+    wordList validTypes(conditionTypes());
+    validTypes.append("empty");
+    validTypes.append("wedge");
 
-    const form::feMesh& fe = feMesh_->feMesh();
     for (const polyPatch& pp : mesh_->boundaryMesh())
     {
         const bool frontBack =
@@ -147,74 +329,13 @@ void Foam::solidRegion::readBoundaryConditions()
                 << pp.type() << " but its condition is '" << type << "'"
                 << exit(FatalIOError);
         }
-        if (frontBack || type == "free")
+        if (frontBack)
         {
             checkKeywords(pd, {"type", "value"});
             continue;
         }
 
-        const std::vector<int>& nodes = fe.nodeSets.at(pp.name());
-        if (type == "fixedDisplacement")
-        {
-            checkKeywords(pd, {"type", "components", "displacement", "value"});
-            labelList comps;
-            if (pd.found("components"))
-            {
-                for (const word& c : pd.get<wordList>("components"))
-                {
-                    comps.append(planeComponent(c, pd));
-                }
-            }
-            else
-            {
-                comps = labelList({0, 1});
-            }
-            std::shared_ptr<Function1<vector>> disp;
-            if (pd.found("displacement"))
-            {
-                disp.reset(Function1<vector>::New("displacement", pd).ptr());
-            }
-            for (const label c : comps)
-            {
-                form::timeFunction f = nullptr;
-                if (disp)
-                {
-                    f = [disp, c](double t) { return disp->value(t)[c]; };
-                }
-                model_->addConstraint(nodes, c, f);
-            }
-        }
-        else if (type == "traction")
-        {
-            checkKeywords(pd, {"type", "traction", "value"});
-            std::shared_ptr<Function1<vector>> tr
-            (
-                Function1<vector>::New("traction", pd).ptr()
-            );
-            model_->addTraction
-            (
-                pp.name(),
-                [tr](double t)
-                {
-                    const vector v = tr->value(t);
-                    return Eigen::Vector2d(v.x(), v.y());
-                }
-            );
-        }
-        else if (type == "pressure")
-        {
-            checkKeywords(pd, {"type", "pressure", "value"});
-            std::shared_ptr<Function1<scalar>> pr
-            (
-                Function1<scalar>::New("pressure", pd).ptr()
-            );
-            model_->addPressure
-            (
-                pp.name(),
-                [pr](double t) { return pr->value(t); }
-            );
-            hasFollowerLoads_ = true;
-        }
+        applyCondition(pp.name(), pd);
     }
     // entries for patches that do not exist
     for (const entry& e : bf)
@@ -460,7 +581,30 @@ void Foam::solidRegion::write()
         feU[n] = vector(U(n, 0), U(n, 1), 0);
     }
 
+    // Material history (plastic strains, back stresses...) for restarts
+    const auto& states = model_->materialStates();
+    label nHist = 0;
+    for (const auto& el : states)
+    {
+        for (const auto& q : el) nHist += q.history.size();
+    }
+    IOField<scalar> feHistory(io("feHistory"), scalarField(nHist, 0));
+    {
+        label k = 0;
+        for (const auto& el : states)
+        {
+            for (const auto& q : el)
+            {
+                for (int i = 0; i < q.history.size(); ++i)
+                {
+                    feHistory[k++] = q.history(i);
+                }
+            }
+        }
+    }
+
     bool ok = true;
+    if (nHist) ok = feHistory.write() && ok;
     ok = pointD.write() && ok;
     ok = D.write() && ok;
     ok = sigma.write() && ok;
@@ -518,6 +662,48 @@ bool Foam::solidRegion::readState(const word& timeName)
         dU(2*n + 1) += feU[n].y();
     }
     model_->setDisplacement(model_->U() + dU);
+
+    // Material history, if the material has one
+    std::vector<std::vector<form::materialState>> states =
+        model_->materialStates();
+    label nHist = 0;
+    for (const auto& el : states)
+    {
+        for (const auto& q : el) nHist += q.history.size();
+    }
+    if (nHist)
+    {
+        IOobject hio
+        (
+            "feHistory", timeName, *mesh_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        if (!hio.typeHeaderOk<IOField<scalar>>(true))
+        {
+            FatalErrorInFunction
+                << "Restart state of region '" << name_ << "' at time "
+                << timeName << " has no material history (feHistory), which"
+                << " the material " << materialType_ << " needs"
+                << exit(FatalError);
+        }
+        IOField<scalar> h(hio);
+        if (h.size() != nHist)
+        {
+            FatalErrorInFunction
+                << "Restart state " << h.objectPath() << " has " << h.size()
+                << " history values; the model needs " << nHist
+                << exit(FatalError);
+        }
+        label k = 0;
+        for (auto& el : states)
+        {
+            for (auto& q : el)
+            {
+                for (int i = 0; i < q.history.size(); ++i) q.history(i) = h[k++];
+            }
+        }
+        model_->setMaterialStates(states);
+    }
     return true;
 }
 
@@ -560,4 +746,47 @@ Foam::scalar Foam::solidRegion::reaction
             << exit(FatalIOError);
     }
     return model_->reaction(iter->second)(component);
+}
+
+
+Foam::scalar Foam::solidRegion::circleRadius
+(
+    const word& patch,
+    const dictionary& dict
+) const
+{
+    // Kasa fit: minimise sum (x^2 + y^2 + a x + b y + c)^2, then
+    // centre (-a/2, -b/2), R^2 = (a^2 + b^2)/4 - c. Coordinates are shifted
+    // to the centroid and scaled for conditioning.
+    const std::vector<int>& nodes = patchNodes(patch, dict);
+    const form::feMesh& fe = feMesh_->feMesh();
+    const form::matX U = model_->displacement();
+    const int n = int(nodes.size());
+    Eigen::MatrixXd P(n, 2);
+    for (int k = 0; k < n; ++k)
+    {
+        P.row(k) = fe.X.row(nodes[k]) + U.row(nodes[k]);
+    }
+    const Eigen::RowVector2d c0 = P.colwise().mean();
+    P.rowwise() -= c0;
+    const double L = std::max(P.cwiseAbs().maxCoeff(), VSMALL);
+    P /= L;
+    Eigen::MatrixXd A(n, 3);
+    Eigen::VectorXd rhs(n);
+    for (int k = 0; k < n; ++k)
+    {
+        A(k, 0) = P(k, 0);
+        A(k, 1) = P(k, 1);
+        A(k, 2) = 1;
+        rhs(k) = -P.row(k).squaredNorm();
+    }
+    if (n < 3)
+    {
+        FatalIOErrorInFunction(dict)
+            << "circleRadius of patch '" << patch << "' in " << dict.name()
+            << " needs at least 3 nodes" << exit(FatalIOError);
+    }
+    const Eigen::Vector3d abc = A.colPivHouseholderQr().solve(rhs);
+    const double R2 = (abc(0)*abc(0) + abc(1)*abc(1))/4 - abc(2);
+    return L*std::sqrt(std::max(R2, 0.0));
 }
