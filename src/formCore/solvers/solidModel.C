@@ -72,6 +72,17 @@ struct solidModel::impl
     std::vector<tractionLoad> tractions;
     std::vector<pressureLoad> pressures;
 
+    //- A released dof whose former reaction is applied as a load that
+    //  decays linearly from force at t0 to zero at t1
+    struct releasedDof
+    {
+        int dof;
+        double force;
+        double t0;
+        double t1;
+    };
+    std::vector<releasedDof> released;
+
     bool finalised = false;
     int revision = 0;
     dofNumbering numbering;
@@ -466,6 +477,35 @@ void solidModel::addNodalConstraint
 }
 
 
+void solidModel::releaseConstraint
+(
+    const std::vector<int>& nodes,
+    int component,
+    double t0,
+    double t1
+)
+{
+    impl& m = *impl_;
+    if (!(t1 > t0))
+    {
+        throw inputError("endTime", "release ramp needs t1 > t0");
+    }
+    // Reaction at the last (converged) evaluation: f_int - f_ext
+    if (m.fint.size() == m.nDofs())
+    {
+        for (int node : nodes)
+        {
+            const int d = node*m.nDim + component;
+            if (node >= 0 && node < m.mesh.nNodes() && m.constraints.count(d))
+            {
+                m.released.push_back({d, m.fint(d) - m.fext(d), t0, t1});
+            }
+        }
+    }
+    releaseConstraint(nodes, component);
+}
+
+
 bool solidModel::constrained(int dof) const
 {
     return impl_->constraints.count(dof) > 0;
@@ -681,6 +721,14 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
     }
 
     m.assembleExternal(t, wantTangent);
+
+    // Reactions of gradually released dofs, decaying linearly to zero
+    for (const auto& r : m.released)
+    {
+        const double w =
+            std::min(1.0, std::max(0.0, 1 - (t - r.t0)/(r.t1 - r.t0)));
+        m.fext(r.dof) += w*r.force;
+    }
 
     const int nFree = m.numbering.nFree();
     residual.resize(nFree);

@@ -118,7 +118,11 @@ void Foam::formScene::readSchedule()
         const dictionary& d = e.dict();
         checkKeywords
         (
-            d, {"endTime", "deltaT", "maxDeltaT", "release", "hold", "prescribe"}
+            d,
+            {
+                "endTime", "deltaT", "maxDeltaT", "release", "hold", "pin",
+                "prescribe"
+            }
         );
         processStep ps;
         ps.name = e.keyword();
@@ -198,12 +202,40 @@ void Foam::formScene::applyActions(const processStep& step)
                 << t.second << nl;
             if (key == "release")
             {
-                s.release(t.first, t.second, d);
+                s.release
+                (
+                    t.first, t.second, d,
+                    max(step.startTime, steps_.startTime), step.endTime
+                );
             }
             else
             {
                 s.hold(t.first, t.second, d);
             }
+        }
+    }
+    if (d.found("pin"))
+    {
+        const dictionary& pd = d.subDict("pin");
+        for (const entry& pe : pd)
+        {
+            if (!pe.isDict())
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Entry '" << pe.keyword() << "' in " << pd.name()
+                    << " must be a dictionary { point (x y z); components"
+                    << " (x y); }" << exit(FatalIOError);
+            }
+            const dictionary& p = pe.dict();
+            checkKeywords(p, {"point", "components"});
+            labelList comps;
+            for (const word& c : p.get<wordList>("components"))
+            {
+                comps.append(planeComponent(c, p));
+            }
+            Info<< "    pin " << pe.keyword() << " at "
+                << p.get<point>("point") << " components " << comps << nl;
+            s.pin(p.get<point>("point"), comps, p);
         }
     }
     if (d.found("prescribe"))

@@ -125,13 +125,18 @@ void Foam::solidRegion::release
 (
     const word& patch,
     const labelList& components,
-    const dictionary& dict
+    const dictionary& dict,
+    const scalar t0,
+    const scalar t1
 )
 {
     const std::vector<int>& nodes = patchNodes(patch, dict);
+    // Current reactions (also after a restart, before any step)
+    form::vecX r;
+    model_->evaluate(t0, r, false);
     for (const label c : components)
     {
-        model_->releaseConstraint(nodes, c);
+        model_->releaseConstraint(nodes, c, t0, t1);
     }
 }
 
@@ -151,6 +156,44 @@ void Foam::solidRegion::hold
         model_->addNodalConstraint
         (
             nodes, c,
+            [U, nDim, c](int node, double) { return U(node*nDim + c); }
+        );
+    }
+}
+
+
+void Foam::solidRegion::pin
+(
+    const point& p,
+    const labelList& components,
+    const dictionary& dict
+)
+{
+    const form::feMesh& fe = feMesh_->feMesh();
+    const Eigen::Vector2d x = feMesh_->toPlane(p);
+    int best = -1;
+    double dmin = GREAT;
+    for (int n = 0; n < fe.nNodes(); ++n)
+    {
+        const double d = (fe.X.row(n).transpose() - x).norm();
+        if (d < dmin) { dmin = d; best = n; }
+    }
+    const double size =
+        (fe.X.colwise().maxCoeff() - fe.X.colwise().minCoeff()).norm();
+    if (best < 0 || dmin > 1e-6*size)
+    {
+        FatalIOErrorInFunction(dict)
+            << "No node of solid region '" << name_ << "' at point " << p
+            << " (nearest at distance " << dmin << ") in " << dict.name()
+            << exit(FatalIOError);
+    }
+    const form::vecX U = model_->U();
+    const int nDim = model_->nDim();
+    for (const label c : components)
+    {
+        model_->addNodalConstraint
+        (
+            {best}, c,
             [U, nDim, c](int node, double) { return U(node*nDim + c); }
         );
     }
@@ -755,9 +798,13 @@ Foam::scalar Foam::solidRegion::circleRadius
     const dictionary& dict
 ) const
 {
-    // Kasa fit: minimise sum (x^2 + y^2 + a x + b y + c)^2, then
-    // centre (-a/2, -b/2), R^2 = (a^2 + b^2)/4 - c. Coordinates are shifted
-    // to the centroid and scaled for conditioning.
+    // Pratt's algebraic fit (Pratt, Computer Graphics 21 (1987) 145-152):
+    // circle A (x^2 + y^2) + B x + C y + D = 0 minimising sum of squared
+    // algebraic distances subject to B^2 + C^2 - 4 A D = 1, i.e. the
+    // generalised eigenproblem M a = eta N a (smallest eta >= 0); then
+    // R = 1/(2|A|). Unlike the Kasa fit it stays exact for short arcs and
+    // gives R -> infinity (A -> 0) for collinear points. Coordinates are
+    // shifted to the centroid and scaled for conditioning.
     const std::vector<int>& nodes = patchNodes(patch, dict);
     const form::feMesh& fe = feMesh_->feMesh();
     const form::matX U = model_->displacement();
@@ -771,22 +818,37 @@ Foam::scalar Foam::solidRegion::circleRadius
     P.rowwise() -= c0;
     const double L = std::max(P.cwiseAbs().maxCoeff(), VSMALL);
     P /= L;
-    Eigen::MatrixXd A(n, 3);
-    Eigen::VectorXd rhs(n);
-    for (int k = 0; k < n; ++k)
-    {
-        A(k, 0) = P(k, 0);
-        A(k, 1) = P(k, 1);
-        A(k, 2) = 1;
-        rhs(k) = -P.row(k).squaredNorm();
-    }
     if (n < 3)
     {
         FatalIOErrorInFunction(dict)
             << "circleRadius of patch '" << patch << "' in " << dict.name()
             << " needs at least 3 nodes" << exit(FatalIOError);
     }
-    const Eigen::Vector3d abc = A.colPivHouseholderQr().solve(rhs);
-    const double R2 = (abc(0)*abc(0) + abc(1)*abc(1))/4 - abc(2);
-    return L*std::sqrt(std::max(R2, 0.0));
+    Eigen::MatrixXd Z(n, 4);
+    for (int k = 0; k < n; ++k)
+    {
+        Z.row(k) << P.row(k).squaredNorm(), P(k, 0), P(k, 1), 1;
+    }
+    const Eigen::Matrix4d M = Z.transpose()*Z/n;
+    Eigen::Matrix4d Ninv = Eigen::Matrix4d::Zero();
+    Ninv(0, 3) = Ninv(3, 0) = -0.5;
+    Ninv(1, 1) = Ninv(2, 2) = 1;
+    Eigen::EigenSolver<Eigen::Matrix4d> eig(Ninv*M);
+    double best = GREAT;
+    double R = GREAT;
+    for (int i = 0; i < 4; ++i)
+    {
+        const double eta = eig.eigenvalues()(i).real();
+        if (std::abs(eig.eigenvalues()(i).imag()) > 1e-12*(1 + std::abs(eta)))
+        {
+            continue;
+        }
+        const Eigen::Vector4d v = eig.eigenvectors().col(i).real();
+        const double c = v(1)*v(1) + v(2)*v(2) - 4*v(0)*v(3);
+        if (!(c > 0) || eta < -1e-10 || eta >= best) continue;
+        best = eta;
+        const double A = std::abs(v(0))/std::sqrt(c);
+        R = A > 0.5/GREAT ? L/(2*A) : GREAT;
+    }
+    return R;
 }

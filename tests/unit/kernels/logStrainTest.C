@@ -31,6 +31,15 @@ struct spdCase
 {
     std::string name;
     mat3 C;
+    //- Tolerance factor: the eigenvalues of C are only known to
+    //  ~eps lambda_max, i.e. to ~eps cond(C) relative for lambda_min
+    double cond() const
+    {
+        const vec3 l = C.selfadjointView<Eigen::Lower>().eigenvalues();
+        return l.maxCoeff()/l.minCoeff();
+    }
+    //- Round-off tolerance for quantities of order one
+    double tol() const { return 1e-14 + 1e-15*cond(); }
     bool spectral;      //!< R and lambda are exact
     mat3 R;
     vec3 lambda;
@@ -98,7 +107,7 @@ std::vector<spdCase> testCases(int nRandom = 20)
     );
     // Clusters whose relative width sits just below, at and above the
     // series/direct switch-over of the second divided difference
-    for (double w : {0.015, 0.02, 0.025, 0.1})
+    for (double w : {0.015, 0.08, 0.1, 0.12, 0.4})
     {
         cases.push_back
         (
@@ -218,23 +227,24 @@ double symmetryDefect(const tensor4& A)
 //    f[a,b,c] = -1/2 int_0^inf dt/((a+t)(b+t)(c+t))
 //  Substituting t = m e^y turns both into integrals over the real line of
 //  functions analytic in the strip |Im y| < pi that decay exponentially,
-//  where the trapezoidal rule converges geometrically (error well below
-//  1e-15 for step 0.02).
+//  where the trapezoidal rule converges geometrically (discretisation
+//  error far below 1e-16 for step 0.02, range +-60).
 double refDD(const std::vector<double>& x)
 {
     const double m = std::sqrt(*std::min_element(x.begin(), x.end())
                               *(*std::max_element(x.begin(), x.end())));
-    const double dy = 0.02;
+    // Extended precision keeps the summed rounding of 6000 nodes ~1e-17
+    const long double dy = 0.02L;
     long double sum = 0;
     for (int n = -3000; n <= 3000; ++n)
     {
-        const double t = m*std::exp(n*dy);
+        const long double t = m*std::exp(n*dy);
         long double g = t;
         for (double xi : x) g /= (xi + t);
         sum += g;
     }
-    const double sign = x.size() == 2 ? 0.5 : -0.5;
-    return sign*double(sum)*dy;
+    const long double sign = x.size() == 2 ? 0.5L : -0.5L;
+    return double(sign*sum*dy);
 }
 
 void report(const std::string& what, double err)
@@ -256,14 +266,15 @@ TEST(logStrain, matchesDirectComputation)
         const mat3 Elog = 0.5*c.C.log();
         const double scale = std::max(Elog.norm(), 1.0);
         const double eLog = (E - Elog).norm()/scale;
-        EXPECT_LT(eLog, 1e-13) << c.name;
+        const double tol = c.tol();
+        EXPECT_LT(eLog, tol) << c.name;
         maxErrLog = std::max(maxErrLog, eLog);
         if (c.spectral)
         {
             const vec3 f = 0.5*c.lambda.array().log().matrix();
             const mat3 Eref = c.R*f.asDiagonal()*c.R.transpose();
             const double e = (E - Eref).norm()/std::max(Eref.norm(), 1.0);
-            EXPECT_LT(e, 1e-13) << c.name;
+            EXPECT_LT(e, tol) << c.name;
             maxErr = std::max(maxErr, e);
         }
         EXPECT_LT((E - E.transpose()).norm(), 1e-15*scale) << c.name;
@@ -278,10 +289,14 @@ TEST(logStrain, traceIsHalfLogDet)
     double maxErr = 0;
     for (const spdCase& c : testCases())
     {
-        const double ref = 0.5*std::log(c.C.determinant());
+        // ln det C from the construction where known: det() of an
+        // ill-conditioned C itself loses up to ~eps cond(C) relative
+        const double ref = c.spectral
+            ? 0.5*c.lambda.array().log().sum()
+            : 0.5*std::log(c.C.determinant());
         const double err = std::abs(E_of(c.C).trace() - ref)
                           /std::max(std::abs(ref), 1.0);
-        EXPECT_LT(err, 1e-13) << c.name;
+        EXPECT_LT(err, c.tol()) << c.name;
         maxErr = std::max(maxErr, err);
     }
     report("tr E vs ln(det C)/2", maxErr);
@@ -308,9 +323,10 @@ TEST(logStrain, rotationEquivariance)
             logStrainSecond(CR, R*T*R.transpose()),
             pushForward(logStrainSecond(c.C, T), R)
         );
-        EXPECT_LT(eE, 1e-13) << c.name;
-        EXPECT_LT(eP, 1e-12) << c.name;
-        EXPECT_LT(eL, 1e-10) << c.name;
+        const double tol = c.tol();
+        EXPECT_LT(eE, tol) << c.name;
+        EXPECT_LT(eP, 10*tol) << c.name;
+        EXPECT_LT(eL, 100*tol) << c.name;
         maxE = std::max(maxE, eE);
         maxP = std::max(maxP, eP);
         maxL = std::max(maxL, eL);
@@ -326,7 +342,7 @@ TEST(logStrain, dividedDifferencesMatchIntegralRepresentation)
     {
         {1, 1}, {2.5, 2.5}, {1, 1 + 1e-12}, {0.3, 0.3*(1 + 1e-10)},
         {1, 1 + 1e-4}, {1, 1 + 2e-3}, {1, 1.01}, {1, 1.1}, {1, 3},
-        {1e-2, 1e2}, {7, 0.05}
+        {1, 2.99}, {1, 3.01}, {1e-2, 1e2}, {7, 0.05}, {1e-3, 1e3}
     };
     double max1 = 0;
     for (const auto& p : pairs)
@@ -334,7 +350,7 @@ TEST(logStrain, dividedDifferencesMatchIntegralRepresentation)
         const double ref = refDD(p);
         const double e = std::abs(logDividedDifference(p[0], p[1]) - ref)
                         /std::abs(ref);
-        EXPECT_LT(e, 1e-13) << p[0] << " " << p[1];
+        EXPECT_LT(e, 2e-15) << p[0] << " " << p[1];
         max1 = std::max(max1, e);
         // Symmetric in its arguments
         EXPECT_EQ(logDividedDifference(p[0], p[1]),
@@ -346,10 +362,11 @@ TEST(logStrain, dividedDifferencesMatchIntegralRepresentation)
         {1, 1, 1}, {0.2, 0.2, 0.2}, {1, 1, 2}, {3, 0.5, 0.5},
         {1, 1, 1 + 1e-10}, {1, 1 + 1e-10, 1 + 2e-10}, {1, 1 + 1e-10, 4},
         {1, 1 + 1e-6, 1 - 1e-6}, {1, 1.001, 0.999}, {1e-2, 1, 1e2},
-        {1e-2, 1e-2, 1e2}, {1e-2, 1e2, 1e2}, {0.05, 20, 3}
+        {1e-2, 1e-2, 1e2}, {1e-2, 1e2, 1e2}, {0.05, 20, 3},
+        {1, 1.1, 1.3}, {1, 1.2, 1.2}, {0.8, 1, 1.25}, {1, 1, 1.5}
     };
     // Widths just below / at / above the switch-over, several shapes
-    for (double w : {0.0199, 0.02, 0.0201, 0.03, 0.05})
+    for (double w : {0.02, 0.0999, 0.1, 0.1001, 0.15, 0.3})
     {
         triples.push_back({1, 1, 1 + w});
         triples.push_back({1, 1 + w/2, 1 + w});
@@ -362,7 +379,7 @@ TEST(logStrain, dividedDifferencesMatchIntegralRepresentation)
         const double ref = refDD(t);
         const double d = logDividedDifference(t[0], t[1], t[2]);
         const double e = std::abs(d - ref)/std::abs(ref);
-        EXPECT_LT(e, 1e-12) << t[0] << " " << t[1] << " " << t[2];
+        EXPECT_LT(e, 5e-14) << t[0] << " " << t[1] << " " << t[2];
         max2 = std::max(max2, e);
         // Symmetric in its arguments (up to rounding)
         EXPECT_NEAR(logDividedDifference(t[2], t[0], t[1]), d,
@@ -417,8 +434,9 @@ TEST(logStrain, tangentMatchesFiniteDifferences)
             maxDir = std::max(maxDir, e);
         }
 
+        // Exact by construction (the kernel symmetrises)
         const double s = symmetryDefect(P);
-        EXPECT_LT(s, 1e-14) << c.name;
+        EXPECT_EQ(s, 0.0) << c.name;
         maxSym = std::max(maxSym, s);
     }
     // C = I: E = 1/2 ln C has P = I_sym
@@ -446,8 +464,8 @@ TEST(logStrain, tangentContractsCToIdentity)
         // symmetry, C : P = I
         const double e1 = (contract(P, c.C) - mat3::Identity()).norm();
         const double e2 = (TcolonP(c.C, P) - mat3::Identity()).norm();
-        EXPECT_LT(e1, 1e-12) << c.name;
-        EXPECT_LT(e2, 1e-12) << c.name;
+        EXPECT_LT(e1, c.tol()) << c.name;
+        EXPECT_LT(e2, c.tol()) << c.name;
         maxErr = std::max({maxErr, e1, e2});
     }
     report("P:C - I", maxErr);
@@ -494,7 +512,7 @@ TEST(logStrain, secondDerivativeMatchesFiniteDifferences)
         }
 
         const double s = symmetryDefect(TL);
-        EXPECT_LT(s, 1e-13) << c.name;
+        EXPECT_EQ(s, 0.0) << c.name;
         maxSym = std::max(maxSym, s);
     }
     // C = I: E = 1/2 ln C, d2E[H,K] = -1/4 (HK + KH), so
