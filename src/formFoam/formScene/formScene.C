@@ -296,12 +296,20 @@ void Foam::formScene::readSummary()
         {
             keys.append(word("patches"));
         }
+        else if (type == "rotation")
+        {
+            keys.append(word("patch"));
+        }
+        else if (type == "bendingRadius")
+        {
+            keys.append(wordList{"patch", "length"});
+        }
         else
         {
             FatalIOErrorInFunction(ed)
                 << "Unknown summary type '" << type << "' in " << ed.name()
                 << nl << "    Valid types: displacement position reaction"
-                << " circleRadius" << exit(FatalIOError);
+                << " circleRadius rotation bendingRadius" << exit(FatalIOError);
         }
         checkKeywords(ed, keys);
         se.statistic = ed.getOrDefault<word>("statistic", "final");
@@ -333,6 +341,15 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         const wordList patches = ed.get<wordList>("patches");
         for (const word& p : patches) value += s.circleRadius(p, ed);
         value /= max(label(1), patches.size());
+    }
+    else if (type == "rotation")
+    {
+        value = s.patchRotation(ed.get<word>("patch"), ed);
+    }
+    else if (type == "bendingRadius")
+    {
+        const scalar theta = s.patchRotation(ed.get<word>("patch"), ed);
+        value = mag(theta) > VSMALL ? ed.get<scalar>("length")/mag(theta) : GREAT;
     }
     else
     {

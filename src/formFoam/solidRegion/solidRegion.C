@@ -852,3 +852,33 @@ Foam::scalar Foam::solidRegion::circleRadius
     }
     return R;
 }
+
+
+Foam::scalar Foam::solidRegion::patchRotation
+(
+    const word& patch,
+    const dictionary& dict
+) const
+{
+    const std::vector<int>& nodes = patchNodes(patch, dict);
+    const form::feMesh& fe = feMesh_->feMesh();
+    const form::matX U = model_->displacement();
+    Eigen::RowVector2d X0 = Eigen::RowVector2d::Zero();
+    Eigen::RowVector2d x0 = Eigen::RowVector2d::Zero();
+    for (const int n : nodes)
+    {
+        X0 += fe.X.row(n);
+        x0 += fe.X.row(n) + U.row(n);
+    }
+    X0 /= nodes.size();
+    x0 /= nodes.size();
+    double cross = 0, dot = 0;
+    for (const int n : nodes)
+    {
+        const Eigen::RowVector2d a = fe.X.row(n) - X0;
+        const Eigen::RowVector2d b = fe.X.row(n) + U.row(n) - x0;
+        cross += a(0)*b(1) - a(1)*b(0);
+        dot += a.dot(b);
+    }
+    return std::atan2(cross, dot);
+}
