@@ -36,6 +36,15 @@ tryCase "Poisson ratio 0.5" "'nu'" \
     "foamDictionary -entry material/nu -set 0.5 $props >/dev/null"
 tryCase "missing parameter" "nu.*not found|not found.*nu|Entry 'nu'" \
     "foamDictionary -entry material/nu -remove $props >/dev/null"
+plastic="type elastoPlastic; hardening { type swift; K 1; eps0 0.01; n 0.2; }"
+tryCase "plasticity: out-of-range hardening exponent" "Entry 'hardening/n'.*solidProperties.*out of range" \
+    "sed -i 's/type        linearElastic;/${plastic/n 0.2/n -0.2}/' $props"
+tryCase "plasticity: mistyped hardening entry" "unknown entry 'hardening/nn'" \
+    "sed -i 's/type        linearElastic;/${plastic/n 0.2;/n 0.2; nn 2;}/' $props"
+tryCase "plasticity: unknown hardening law" "unknown hardening/type 'swiftt'.*valid: perfect linear swift voce tabulated" \
+    "sed -i 's/type        linearElastic;/${plastic/swift/swiftt}/' $props"
+tryCase "plasticity: negative r-value" "Entry 'yield/r90'.*out of range" \
+    "sed -i 's/type        linearElastic;/$plastic yield { type hill48; r0 1.5; r45 1.2; r90 -2; rollingDirection x; normalDirection y; }/' $props"
 tryCase "mistyped entry" "Unknown entry 'elemntType'" \
     "sed -i 's/^elementType/elemntType/' $props"
 tryCase "unknown analysisType" "analysisType.*planeStress|planeStress.*analysisType" \
