@@ -106,7 +106,8 @@ void Foam::formScene::readSchedule()
     );
     checkKeywords(sd, {"steps"});
     const dictionary& steps = sd.subDict("steps");
-    scalar t0 = steps_.startTime;
+    // The first step starts with the case (before any restart time)
+    scalar t0 = -GREAT;
     for (const entry& e : steps)
     {
         if (!e.isDict())

@@ -325,8 +325,19 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
 
 void Foam::solidRegion::readBoundaryConditions()
 {
-    const fileName path =
-        runTime_.path()/runTime_.timeName()/name_/"D";
+    // The conditions are input: they live in the case's initial time
+    // directory (the earliest with <region>/D), also when restarting from a
+    // later time, whose D holds results
+    fileName path = runTime_.path()/runTime_.timeName()/name_/"D";
+    for (const instant& t : runTime_.times())
+    {
+        const fileName p = runTime_.path()/t.name()/name_/"D";
+        if (t.name() != runTime_.constant() && isFile(p))
+        {
+            path = p;
+            break;
+        }
+    }
     if (!isFile(path))
     {
         FatalErrorInFunction
