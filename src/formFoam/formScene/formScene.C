@@ -4,6 +4,7 @@
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "clockTime.H"
+#include "autoSolver.H"
 #include <fstream>
 #include <iostream>
 
@@ -504,14 +505,23 @@ Foam::formScene::formScene(Time& runTime)
         solids_.append(new solidRegion(runTime, name));
     }
 
+    // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching
+    // to UMFPACK if a tangent turns out indefinite (autoSolver.H)
     word solverName = linearSolverName_;
-    if (solverName == "auto")
+    if (solverName == "auto" && solids_[0].model().unsymmetric())
     {
-        solverName = solids_[0].model().unsymmetric() ? "umfpack" : "cholmod";
+        solverName = "umfpack";
     }
     try
     {
-        linearSolver_ = form::linearSolver::New(solverName);
+        if (solverName == "auto")
+        {
+            linearSolver_.reset(new form::autoSolver(&std::cout));
+        }
+        else
+        {
+            linearSolver_ = form::linearSolver::New(solverName);
+        }
     }
     catch (const form::inputError& err)
     {
