@@ -354,3 +354,39 @@ TEST(staticSolver, SPDSolverRejectsUnsymmetricModel)
     staticSolver s(model, *lu, {}, {}, log);
     EXPECT_NO_THROW(s.run(nullptr));
 }
+
+
+TEST(staticSolver, FailedMaterialUpdateIsReportedAndCutBack)
+{
+    // The bar law refuses strains above 0.2 (as a return mapping that does
+    // not converge would): a first attempt that reaches such a strain
+    // during its iterations is reported, the step is cut back, and the run
+    // still ends on the small-step answer. The load F = 150 gives a strain
+    // of 0.15: the predictor of the single big step overshoots it.
+    auto law = barLaw(false, 1000, 1, 10);
+    law->strainLimit = 0.2;
+    newtonControls nc;
+    nc.lineSearch = false;
+    auto solver = linearSolver::New("cholmod");
+
+    solidModel ref = pulledBar(5, barLaw(false, 1000, 1, 10));
+    stepControls small;
+    small.deltaT = 0.02;
+    small.growthFactor = 1;
+    std::ostringstream refLog;
+    staticSolver(ref, *solver, nc, small, refLog).run(nullptr);
+
+    solidModel model = pulledBar(5, law);
+    stepControls big;
+    big.deltaT = 1;
+    std::ostringstream log;
+    staticSolver s(model, *solver, nc, big, log);
+    std::vector<stepReport> reports;
+    s.run([&](const stepReport& r) { reports.push_back(r); });
+    EXPECT_NE(log.str().find("material update failed"), std::string::npos)
+        << log.str();
+    ASSERT_FALSE(reports.empty());
+    EXPECT_GE(reports[0].cutbacks, 1);
+    EXPECT_EQ(reports.back().time, 1.0);
+    EXPECT_NEAR(model.U()(2), ref.U()(2), 1e-9*std::abs(ref.U()(2)));
+}
