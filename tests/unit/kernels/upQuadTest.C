@@ -5,6 +5,7 @@
 // mass matrix; averaged results; inversion detection.
 #include "solidElement.H"
 #include "formError.H"
+#include "materialInput.H"
 #include "kernelTestTools.H"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -290,4 +291,57 @@ TEST(upQuad, badInputThrowsInsteadOfCrashing)
     matX Xneg = X9;
     Xneg.col(0).array() -= 1.5;
     EXPECT_THROW(q9->massMatrix(Xneg), numericalError);
+}
+
+
+TEST(upQuad, elastoPlasticTangentMatchesFiniteDifferences)
+{
+    // The u/p elements with finite-strain plasticity (the deviatoric part
+    // from the return mapping, the pressure from the element's field): von
+    // Mises + Swift (symmetric) and Hill'48 + Armstrong-Frederick
+    // (unsymmetric), plastic at every Gauss point (yield strain 0.01, large
+    // displacements), every element type and analysis
+    materialInput vm;
+    vm.words["type"] = "elastoPlastic";
+    vm.scalars = {{"E", 100}, {"nu", 0.3}};
+    vm.dicts["hardening"].path = "hardening";
+    vm.dicts["hardening"].words["type"] = "swift";
+    vm.dicts["hardening"].scalars = {{"K", 1.5}, {"eps0", 0.01}, {"n", 0.2}};
+    materialInput hill = vm;
+    hill.dicts["yield"].path = "yield";
+    hill.dicts["yield"].words = {{"type", "hill48"}, {"rollingDirection", "x"},
+                                 {"normalDirection", "y"}};
+    hill.dicts["yield"].scalars = {{"r0", 1.8}, {"r45", 1.2}, {"r90", 2.3}};
+    hill.dicts["kinematicHardening"].path = "kinematicHardening";
+    hill.dicts["kinematicHardening"].words["type"] = "armstrongFrederick";
+    hill.dicts["kinematicHardening"].scalars = {{"C", 20}, {"gamma", 10}};
+
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    for (const materialInput* in : {&vm, &hill})
+    {
+        const auto mat = material::New("elastoPlastic", *in);
+        for (const analysisType a : analyses)
+        {
+            for (const std::string& type : types)
+            {
+                const auto el = solidElement::New(type, a);
+                const matX X = randomElement(el->nNodes(), rng);
+                matX u;
+                evaluation e;
+                for (int tries = 0; ; ++tries)
+                {
+                    ASSERT_LT(tries, 50);
+                    u = 0.2*matX::NullaryExpr(el->nNodes(), 2,
+                        [&]() { return uni(rng); });
+                    try { e = evaluate(*el, X, u, *mat); break; }
+                    catch (const inversionError&) {}
+                }
+                const matX Kfd = fdTangent(*el, X, u, *mat, 1e-7);
+                EXPECT_LT(test::relErr(e.K, Kfd), 1e-5) << type << " "
+                    << analysisTypeName(a) << " "
+                    << (in == &vm ? "vonMises" : "hill48 AF");
+            }
+        }
+    }
 }
