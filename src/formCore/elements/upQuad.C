@@ -19,13 +19,6 @@ namespace
 {
 const double twoPi = 2*M_PI;
 
-std::string num(double v)
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << v;
-    return os.str();
-}
 } // anonymous namespace
 
 
@@ -99,7 +92,7 @@ typename upQuad<NN, NP>::pointGeometry upQuad<NN, NP>::geometry
         throw numericalError
         (
             "element " + std::to_string(elementId) + " (" + name_
-          + "): reference Jacobian det J0 = " + num(detJ0)
+          + "): reference Jacobian det J0 = " + formatNumber(detJ0)
           + " <= 0; the mesh cell is inverted or degenerate"
         );
     }
@@ -113,7 +106,7 @@ typename upQuad<NN, NP>::pointGeometry upQuad<NN, NP>::geometry
             throw numericalError
             (
                 "element " + std::to_string(elementId)
-              + ": quadrature point at radius R = " + num(g.R)
+              + ": quadrature point at radius R = " + formatNumber(g.R)
               + " <= 0 in an axisymmetric model (x is the radius)"
             );
         }
@@ -181,7 +174,7 @@ void upQuad<NN, NP>::kinematics
                 (
                     elementId,
                     "element " + std::to_string(elementId) + " (" + name_
-                  + "): det F = " + num(pk.J) + " <= 0 at quadrature point "
+                  + "): det F = " + formatNumber(pk.J) + " <= 0 at quadrature point "
                   + std::to_string(q)
                 );
             }

@@ -45,14 +45,6 @@ double checked(const parameterSpec& spec, double value, const std::string& entry
     return value;
 }
 
-std::string fmt(double v)
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << v;
-    return os.str();
-}
-
 void checkVoce(double sigmaY0, double sigmaInf, const std::string& entry)
 {
     if (sigmaInf < sigmaY0)
@@ -60,8 +52,8 @@ void checkVoce(double sigmaY0, double sigmaInf, const std::string& entry)
         throw inputError
         (
             entry,
-            "parameter '" + entry + "' = " + fmt(sigmaInf)
-          + " is below sigmaY0 = " + fmt(sigmaY0)
+            "parameter '" + entry + "' = " + formatNumber(sigmaInf)
+          + " is below sigmaY0 = " + formatNumber(sigmaY0)
           + " (softening is not supported)"
         );
     }
@@ -96,7 +88,7 @@ perfectHardening::perfectHardening(const materialInput& dict)
 
 std::string perfectHardening::summary() const
 {
-    return "perfect: sigmaY = " + fmt(sigmaY0_);
+    return "perfect: sigmaY = " + formatNumber(sigmaY0_);
 }
 
 
@@ -122,8 +114,8 @@ linearHardening::linearHardening(const materialInput& dict)
 
 std::string linearHardening::summary() const
 {
-    return "linear: sigmaY = sigmaY0 + H epsP, sigmaY0 = " + fmt(sigmaY0_)
-         + ", H = " + fmt(H_);
+    return "linear: sigmaY = sigmaY0 + H epsP, sigmaY0 = " + formatNumber(sigmaY0_)
+         + ", H = " + formatNumber(H_);
 }
 
 
@@ -165,8 +157,8 @@ double swiftHardening::slope(double epsP) const
 
 std::string swiftHardening::summary() const
 {
-    return "swift: sigmaY = K (eps0 + epsP)^n, K = " + fmt(K_)
-         + ", eps0 = " + fmt(eps0_) + ", n = " + fmt(n_);
+    return "swift: sigmaY = K (eps0 + epsP)^n, K = " + formatNumber(K_)
+         + ", eps0 = " + formatNumber(eps0_) + ", n = " + formatNumber(n_);
 }
 
 
@@ -221,8 +213,8 @@ double voceHardening::slope(double epsP) const
 std::string voceHardening::summary() const
 {
     return "voce: sigmaY = sigmaY0 + (sigmaInf - sigmaY0)(1 - exp(-b epsP))"
-           " + H epsP, sigmaY0 = " + fmt(sigmaY0_) + ", sigmaInf = "
-         + fmt(sigmaInf_) + ", b = " + fmt(b_) + ", H = " + fmt(H_);
+           " + H epsP, sigmaY0 = " + formatNumber(sigmaY0_) + ", sigmaInf = "
+         + formatNumber(sigmaInf_) + ", b = " + formatNumber(b_) + ", H = " + formatNumber(H_);
 }
 
 
@@ -246,7 +238,7 @@ tabulatedHardening::tabulatedHardening
     {
         const double e = points[i][0], s = points[i][1];
         const std::string at = "point " + std::to_string(i + 1)
-            + " (" + fmt(e) + " " + fmt(s) + ")";
+            + " (" + formatNumber(e) + " " + formatNumber(s) + ")";
         if (!std::isfinite(e) || !std::isfinite(s))
         {
             fail(at + " is not finite");
@@ -309,8 +301,8 @@ double tabulatedHardening::slope(double epsP) const
 std::string tabulatedHardening::summary() const
 {
     return "tabulated: " + std::to_string(eps_.size()) + " points, sigmaY "
-         + fmt(sigma_.front()) + " .. " + fmt(sigma_.back()) + " for epsP 0 .. "
-         + fmt(eps_.back()) + ", piecewise linear, constant beyond";
+         + formatNumber(sigma_.front()) + " .. " + formatNumber(sigma_.back()) + " for epsP 0 .. "
+         + formatNumber(eps_.back()) + ", piecewise linear, constant beyond";
 }
 
 

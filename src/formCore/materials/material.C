@@ -15,17 +15,6 @@ Description
 namespace form
 {
 
-namespace
-{
-std::string formatNumber(double v)
-{
-    std::ostringstream os;
-    os.precision(12);
-    os << v;
-    return os.str();
-}
-} // anonymous namespace
-
 
 void parameterSpec::check(double value) const
 {
@@ -36,9 +25,9 @@ void parameterSpec::check(double value) const
         throw inputError
         (
             name,
-            "parameter '" + name + "' = " + formatNumber(value)
+            "parameter '" + name + "' = " + formatNumber(value, 12)
           + " is out of range " + (minInclusive ? "[" : "(")
-          + formatNumber(min) + ", " + formatNumber(max)
+          + formatNumber(min, 12) + ", " + formatNumber(max, 12)
           + (maxInclusive ? "]" : ")")
           + (description.empty() ? "" : " (" + description + ")")
         );

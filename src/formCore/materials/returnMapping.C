@@ -56,14 +56,6 @@ double normW(const vec6& s)
     return std::sqrt(s.dot(Wv.cwiseProduct(s)));
 }
 
-std::string fmt(double v)
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << v;
-    return os.str();
-}
-
 } // anonymous namespace
 
 
@@ -133,7 +125,7 @@ void plasticity::init()
         throw inputError
         (
             "G",
-            "plasticity: shear modulus G = " + fmt(G_) + " must be positive"
+            "plasticity: shear modulus G = " + formatNumber(G_) + " must be positive"
         );
     }
     CSpec.check(C_);
@@ -464,12 +456,12 @@ std::string plasticity::summary() const
     if (C_ > 0)
     {
         kin = gamma_ > 0
-            ? "armstrongFrederick C = " + fmt(C_) + ", gamma = " + fmt(gamma_)
-            : "prager C = " + fmt(C_);
+            ? "armstrongFrederick C = " + formatNumber(C_) + ", gamma = " + formatNumber(gamma_)
+            : "prager C = " + formatNumber(C_);
     }
     return "yield " + yield_->summary() + "; hardening "
          + hardening_->summary() + "; kinematic hardening " + kin
-         + "; G = " + fmt(G_);
+         + "; G = " + formatNumber(G_);
 }
 
 } // namespace form

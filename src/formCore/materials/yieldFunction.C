@@ -44,14 +44,6 @@ std::string join(const std::string& path, const std::string& key)
     return path.empty() ? key : path + "/" + key;
 }
 
-std::string fmt(double v)
-{
-    std::ostringstream os;
-    os.precision(6);
-    os << v;
-    return os.str();
-}
-
 //- Voigt index of the symmetric pair (i, j)
 int voigtIndex(int i, int j)
 {
@@ -96,8 +88,8 @@ void checkHill
         throw inputError
         (
             e,
-            "Hill'48 constants F = " + fmt(F) + ", G = " + fmt(G) + ", H = "
-          + fmt(H) + " (" + join(path, "F") + " ...) do not bound the "
+            "Hill'48 constants F = " + formatNumber(F) + ", G = " + formatNumber(G) + ", H = "
+          + formatNumber(H) + " (" + join(path, "F") + " ...) do not bound the "
             "deviatoric stresses: need F + G + H > 0 and FG + GH + HF > 0"
         );
     }
@@ -297,10 +289,10 @@ hill48Yield::hill48Yield(const dictInput& in, const std::string& path)
 std::string hill48Yield::summary() const
 {
     const double F = FGHLMN_[0], G = FGHLMN_[1], H = FGHLMN_[2];
-    std::string s = "hill48: F " + fmt(F) + ", G " + fmt(G) + ", H " + fmt(H)
-        + ", L " + fmt(FGHLMN_[3]) + ", M " + fmt(FGHLMN_[4]) + ", N "
-        + fmt(FGHLMN_[5]) + " (r0 " + fmt(H/G) + ", r45 "
-        + fmt(FGHLMN_[5]/(F + G) - 0.5) + ", r90 " + fmt(H/F)
+    std::string s = "hill48: F " + formatNumber(F) + ", G " + formatNumber(G) + ", H " + formatNumber(H)
+        + ", L " + formatNumber(FGHLMN_[3]) + ", M " + formatNumber(FGHLMN_[4]) + ", N "
+        + formatNumber(FGHLMN_[5]) + " (r0 " + formatNumber(H/G) + ", r45 "
+        + formatNumber(FGHLMN_[5]/(F + G) - 0.5) + ", r90 " + formatNumber(H/F)
         + "), rolling " + axisName(rolling_) + ", normal "
         + axisName(normal_);
     return s;

@@ -803,6 +803,26 @@ Foam::scalar Foam::solidRegion::reaction
 }
 
 
+Eigen::MatrixXd Foam::solidRegion::patchPoints
+(
+    const word& patch,
+    const dictionary& dict,
+    const bool current
+) const
+{
+    const std::vector<int>& nodes = patchNodes(patch, dict);
+    const form::feMesh& fe = feMesh_->feMesh();
+    const form::matX U = model_->displacement();
+    Eigen::MatrixXd P(nodes.size(), 2);
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+    {
+        P.row(k) = fe.X.row(nodes[k]);
+        if (current) P.row(k) += U.row(nodes[k]);
+    }
+    return P;
+}
+
+
 Foam::scalar Foam::solidRegion::circleRadius
 (
     const word& patch,
@@ -816,15 +836,8 @@ Foam::scalar Foam::solidRegion::circleRadius
     // R = 1/(2|A|). Unlike the Kasa fit it stays exact for short arcs and
     // gives R -> infinity (A -> 0) for collinear points. Coordinates are
     // shifted to the centroid and scaled for conditioning.
-    const std::vector<int>& nodes = patchNodes(patch, dict);
-    const form::feMesh& fe = feMesh_->feMesh();
-    const form::matX U = model_->displacement();
-    const int n = int(nodes.size());
-    Eigen::MatrixXd P(n, 2);
-    for (int k = 0; k < n; ++k)
-    {
-        P.row(k) = fe.X.row(nodes[k]) + U.row(nodes[k]);
-    }
+    Eigen::MatrixXd P = patchPoints(patch, dict, true);
+    const int n = int(P.rows());
     const Eigen::RowVector2d c0 = P.colwise().mean();
     P.rowwise() -= c0;
     const double L = std::max(P.cwiseAbs().maxCoeff(), VSMALL);
@@ -871,25 +884,15 @@ Foam::scalar Foam::solidRegion::patchRotation
     const dictionary& dict
 ) const
 {
-    const std::vector<int>& nodes = patchNodes(patch, dict);
-    const form::feMesh& fe = feMesh_->feMesh();
-    const form::matX U = model_->displacement();
-    Eigen::RowVector2d X0 = Eigen::RowVector2d::Zero();
-    Eigen::RowVector2d x0 = Eigen::RowVector2d::Zero();
-    for (const int n : nodes)
-    {
-        X0 += fe.X.row(n);
-        x0 += fe.X.row(n) + U.row(n);
-    }
-    X0 /= nodes.size();
-    x0 /= nodes.size();
+    Eigen::MatrixXd A = patchPoints(patch, dict, false);
+    Eigen::MatrixXd B = patchPoints(patch, dict, true);
+    A.rowwise() -= A.colwise().mean();
+    B.rowwise() -= B.colwise().mean();
     double cross = 0, dot = 0;
-    for (const int n : nodes)
+    for (int k = 0; k < A.rows(); ++k)
     {
-        const Eigen::RowVector2d a = fe.X.row(n) - X0;
-        const Eigen::RowVector2d b = fe.X.row(n) + U.row(n) - x0;
-        cross += a(0)*b(1) - a(1)*b(0);
-        dot += a.dot(b);
+        cross += A(k, 0)*B(k, 1) - A(k, 1)*B(k, 0);
+        dot += A.row(k).dot(B.row(k));
     }
     return std::atan2(cross, dot);
 }

@@ -103,25 +103,6 @@ mat3 tauFull(const material& m, const mat3& F, const materialState& s0,
     return tau + m.bulkModulus()*std::log(F.determinant())*mat3::Identity();
 }
 
-template<class Fn>
-mat6 fdSpatialTangent(const Fn& tauOf, const mat3& F, double h)
-{
-    const mat3 tau = tauOf(F);
-    mat6 c;
-    for (int k = 0; k < 6; ++k)
-    {
-        mat3 D = mat3::Zero();
-        const int i = voigtI[k], j = voigtJ[k];
-        if (i == j) D(i, i) = 1;
-        else D(i, j) = D(j, i) = 0.5;
-        const mat3 dtau =
-            (tauOf((mat3::Identity() + h*D)*F)
-           - tauOf((mat3::Identity() - h*D)*F))/(2*h);
-        c.col(k) = toVoigtStress(dtau - D*tau - tau*D);
-    }
-    return c;
-}
-
 //- Homogeneous uniaxial Kirchhoff-stress state along the unit vector d:
 //  F = R diag-free symmetric stretch; the 5 components of U other than
 //  d.U.d are solved so that tau has only its d-d component. Updates the
@@ -317,7 +298,7 @@ TEST(elastoPlastic, spatialTangentMatchesFiniteDifferences)
                 EXPECT_TRUE(m->deviatoric(F, committed, s, t, cc));
                 return t;
             };
-            const mat6 cFD = fdSpatialTangent(tauOf, F2, 1e-6);
+            const mat6 cFD = test::fdSpatialTangent(tauOf, F2, 1e-6);
             EXPECT_LT(test::relErr(c, cFD), 2e-6) << cd.name << "\n" << c
                 << "\nFD\n" << cFD;
         }

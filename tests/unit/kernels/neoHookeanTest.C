@@ -10,29 +10,6 @@
 
 using namespace form;
 
-namespace
-{
-// Kirchhoff stress from a stress function of F
-template<class Fn>
-mat6 fdSpatialTangent(const Fn& tauOf, const mat3& F, double h)
-{
-    const mat3 tau = tauOf(F);
-    mat6 c;
-    for (int k = 0; k < 6; ++k)
-    {
-        // Symmetric D whose engineering Voigt vector is the unit vector k
-        mat3 D = mat3::Zero();
-        const int i = voigtI[k], j = voigtJ[k];
-        if (i == j) D(i, i) = 1;
-        else D(i, j) = D(j, i) = 0.5;
-        const mat3 dtau =
-            (tauOf((mat3::Identity() + h*D)*F)
-           - tauOf((mat3::Identity() - h*D)*F))/(2*h);
-        c.col(k) = toVoigtStress(dtau - D*tau - tau*D);
-    }
-    return c;
-}
-}
 
 TEST(neoHookean, stressClosedForms)
 {
@@ -110,7 +87,7 @@ TEST(neoHookean, spatialTangentMatchesFiniteDifferences)
         mat3 tau;
         mat6 c;
         ASSERT_TRUE(m.deviatoric(F, s0, s1, tau, c));
-        const mat6 cFD = fdSpatialTangent(tauOf, F, 1e-5);
+        const mat6 cFD = test::fdSpatialTangent(tauOf, F, 1e-5);
         EXPECT_LT(test::relErr(c, cFD), 1e-6) << "sample " << k;
 
         // Random symmetric direction, engineering Voigt
@@ -153,6 +130,6 @@ TEST(neoHookean, volumetricTangentConventionOfDisplacementElements)
         const double p = kappa*std::log(F.determinant());
         c += kappa*m1*m1.transpose();
         c.diagonal() -= 2*p*iSym;
-        EXPECT_LT(test::relErr(c, fdSpatialTangent(tauOf, F, 1e-5)), 1e-6);
+        EXPECT_LT(test::relErr(c, test::fdSpatialTangent(tauOf, F, 1e-5)), 1e-6);
     }
 }

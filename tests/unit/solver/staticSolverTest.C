@@ -91,6 +91,24 @@ std::vector<double> convergenceRates(const std::vector<double>& r, double ref)
     return rates;
 }
 
+//- The pulled bar solved in 50 small steps: the reference of cutback tests
+solidModel smallStepPulledBar
+(
+    double F,
+    std::shared_ptr<material> law,
+    linearSolver& solver,
+    const newtonControls& nc
+)
+{
+    solidModel ref = pulledBar(F, law);
+    stepControls small;
+    small.deltaT = 0.02;
+    small.growthFactor = 1;
+    std::ostringstream refLog;
+    staticSolver(ref, solver, nc, small, refLog).run(nullptr);
+    return ref;
+}
+
 } // namespace
 
 
@@ -171,13 +189,8 @@ TEST(staticSolver, DivergingStepIsCutBackAndReachesTheSmallStepAnswer)
     nc.maxIterations = 12;
 
     // Reference: many small steps
-    solidModel ref = pulledBar(5, law);
     auto solver = linearSolver::New("cholmod");
-    stepControls small;
-    small.deltaT = 0.02;
-    small.growthFactor = 1;
-    std::ostringstream refLog;
-    staticSolver(ref, *solver, nc, small, refLog).run(nullptr);
+    solidModel ref = smallStepPulledBar(5, law, *solver, nc);
 
     solidModel model = pulledBar(5, law);
     stepControls big;
@@ -368,13 +381,8 @@ TEST(staticSolver, FailedMaterialUpdateIsReportedAndCutBack)
     newtonControls nc;
     nc.lineSearch = false;
     auto solver = linearSolver::New("cholmod");
-
-    solidModel ref = pulledBar(5, barLaw(false, 1000, 1, 10));
-    stepControls small;
-    small.deltaT = 0.02;
-    small.growthFactor = 1;
-    std::ostringstream refLog;
-    staticSolver(ref, *solver, nc, small, refLog).run(nullptr);
+    solidModel ref =
+        smallStepPulledBar(5, barLaw(false, 1000, 1, 10), *solver, nc);
 
     solidModel model = pulledBar(5, law);
     stepControls big;
