@@ -40,28 +40,7 @@ c=$(caseCopy cooksMembrane/neoHookean)
 run "$c" || fail "neo-Hookean run (see $c/log.formFoam)"
 tipSteps=$(summaryValue "$c" tipDisplacementY)
 checkClose "neo-Hookean reaction = -100" "$(summaryValue "$c" clampReactionY)" -100 1e-6
-# Convergence order from the energy column |dU.r| (relative to the step's
-# first iteration; it squares like the residual): q = log(e+/e)/log(e/e-)
-# for the last decreasing triple of each step above round-off (1e-17),
-# median over the steps. The force residual itself reaches a round-off
-# floor (~1e-8 here, machine precision times the bulk modulus) and cannot
-# show the rate at the end of a step.
-rate=$(awk '
-    /^Step / { flush(); next }
-    match($0, /energy [0-9.eE+-]+/) {
-        v = substr($0, RSTART + 7, RLENGTH - 7); e[n++] = v + 0
-    }
-    function flush(   k, q) {
-        q = ""
-        for (k = 1; k + 1 < n; ++k) {
-            if (e[k+1] > 1e-17 && e[k+1] < e[k] && e[k] < e[k-1])
-                q = log(e[k+1]/e[k])/log(e[k]/e[k-1])
-        }
-        if (q != "") print q
-        n = 0
-    }
-    END { flush() }' "$c/log.formFoam" \
-    | sort -g | awk '{ v[NR] = $1 } END { print (NR ? v[int((NR + 1)/2)] : "none") }')
+rate=$(newtonOrder "$c/log.formFoam")
 if awk -v q="$rate" 'BEGIN { exit !(q != "none" && q > 1.6 && q < 2.6) }'; then
     pass "neo-Hookean Newton convergence order $rate (quadratic: ~2)"
 else

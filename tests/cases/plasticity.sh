@@ -24,14 +24,25 @@ punch()   # punch <element> <n>: prints the limit pressure
     sed -i "s/elementType     Q9P3;/elementType     $1;/" "$d/constant/block/solidProperties"
     (cd "$d" && blockMesh -region block > log.blockMesh 2>&1 && formFoam > log.formFoam 2>&1) \
         && summaryValue "$d" punchPressure
+    [ -z "${3:-}" ] || cp "$d/log.formFoam" "$3"
     rm -rf "$d"
 }
-p4=$(punch Q9P3 4)
+punchLog=$(mktemp "${TMPDIR:-/tmp}/formFoamPunchLog.XXXXXX")
+p4=$(punch Q9P3 4 "$punchLog")
 p8=$(punch Q9P3 8)
 q4=$(punch Q4 4)
 q8=$(punch Q4 8)
 echo "    Prandtl (2 + pi) k = $prandtl"
 echo "    Q9P3: n = 4 $p4, n = 8 $p8;  Q4: n = 4 $q4, n = 8 $q8"
+# Newton converges quadratically in elastic-plastic flow (consistent
+# tangent of the return mapping, the log-strain kinematics and the element)
+rate=$(newtonOrder "$punchLog")
+if awk -v q="$rate" 'BEGIN { exit !(q != "none" && q > 1.6 && q < 2.6) }'; then
+    pass "punch (plastic flow) Newton convergence order $rate (quadratic: ~2)"
+else
+    fail "punch (plastic flow) Newton convergence order $rate (expected ~2)"
+fi
+rm -f "$punchLog"
 checkClose "Q9P3 limit pressure unchanged on refinement (n 4 -> 8)" "$p4" "$p8" 0.02
 checkClose "Q9P3 limit pressure vs Prandtl (n = 8)" "$p8" "$prandtl" 0.05
 checkBelow "Q4 locks: Prandtl + 10 % below its pressure (n = 4)" \
