@@ -19,7 +19,8 @@ void Foam::formScene::readSolution()
         {
             "analysis", "linearSolver", "minDeltaT", "maxDeltaT",
             "maxCutbacks", "maxIterations", "forceTolerance",
-            "energyTolerance", "lineSearch", "summary"
+            "energyTolerance", "lineSearch", "growthFactor",
+            "growthIterations", "summary"
         }
     );
     const word analysis = d.getOrDefault<word>("analysis", "static");
@@ -37,6 +38,14 @@ void Foam::formScene::readSolution()
     steps_.minDeltaT = d.getOrDefault<scalar>("minDeltaT", 1e-4*steps_.deltaT);
     steps_.maxDeltaT = d.getOrDefault<scalar>("maxDeltaT", steps_.deltaT);
     steps_.maxCutbacks = d.getOrDefault<label>("maxCutbacks", 10);
+    steps_.growthFactor = d.getOrDefault<scalar>("growthFactor", 1.5);
+    steps_.easyIterations = d.getOrDefault<label>("growthIterations", 4);
+    if (!(steps_.growthFactor >= 1))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'growthFactor' in " << d.name() << " must be >= 1, got "
+            << steps_.growthFactor << exit(FatalIOError);
+    }
     newton_.maxIterations = d.getOrDefault<label>("maxIterations", 20);
     newton_.forceTolerance = d.getOrDefault<scalar>("forceTolerance", 1e-8);
     newton_.energyTolerance = d.getOrDefault<scalar>("energyTolerance", 1e-14);
@@ -396,8 +405,25 @@ void Foam::formScene::recordSummary(scalar time, bool first)
     {
         const scalar v = evaluate(e);
         os << ' ' << v;
-        if (e.atTime && mag(time - e.time) > 1e-9*max(mag(e.time), 1.0))
+        const scalar tPrev = e.prevTime, vPrev = e.prevValue;
+        e.prevTime = time;
+        e.prevValue = v;
+        if (e.atTime)
         {
+            // Value at e.time: linear interpolation between the converged
+            // steps that bracket it (exact when a step ends on it)
+            const scalar tol = 1e-9*max(mag(e.time), 1.0);
+            if (mag(time - e.time) <= tol)
+            {
+                e.value = v;
+                e.set = true;
+            }
+            else if (!first && tPrev < e.time && e.time < time)
+            {
+                const scalar w = (e.time - tPrev)/(time - tPrev);
+                e.value = vPrev + w*(v - vPrev);
+                e.set = true;
+            }
             continue;
         }
         if

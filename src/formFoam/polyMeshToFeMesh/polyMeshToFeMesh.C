@@ -76,6 +76,19 @@ Foam::polyMeshToFeMesh::polyMeshToFeMesh
             axis_ /= mag(axis_);
         }
     }
+    // The two wedge patches report opposite axis directions: orient the
+    // axis so that its largest component is positive, so that the axial
+    // FE coordinate grows with the global coordinate it follows (y for an
+    // axis along y), whatever the patch order
+    if (anyWedge)
+    {
+        direction d = 0;
+        for (direction i = 1; i < 3; ++i)
+        {
+            if (mag(axis_[i]) > mag(axis_[d])) d = i;
+        }
+        if (axis_[d] < 0) axis_ = -axis_;
+    }
     if (!anyEmpty && !anyWedge)
     {
         FatalErrorInFunction
