@@ -20,6 +20,13 @@ checkClose "u_r(b), traction, nu 0.3" "$(summaryValue "$c" outerRadialDisplaceme
 checkClose "axial end force 2 nu p pi a^2" "$(summaryValue "$c" axialReaction)" \
     "$(awk 'BEGIN { printf "%.12g", 2*0.3*atan2(0, -1) }')" 1e-5
 
+# 1b. the same with the two wedge patches listed in the other order: the
+#    axis (and so the sign of axial results) must not depend on it
+sed -i -e '/back   { type wedge/{h;d}' -e '/front  { type wedge/{G}' "$c/system/solid/blockMeshDict"
+run || fail "axisymmetric run, wedge patches swapped (see $c/log.formFoam)"
+checkClose "axial end force with the wedge patches swapped" "$(summaryValue "$c" axialReaction)" \
+    "$(awk 'BEGIN { printf "%.12g", 2*0.3*atan2(0, -1) }')" 1e-5
+
 # 2. nearly incompressible (nu = 0.4999) with a follower pressure on the
 #    inner surface (stiff material: the geometry change is ~1e-6)
 sed -i 's/E 1000; nu 0.3;/E 1e6; nu 0.4999;/' "$c/constant/solid/solidProperties"
