@@ -109,6 +109,23 @@ solidModel smallStepPulledBar
     return ref;
 }
 
+//- The pulled bar in one step of deltaT = 1 (the solver cuts it back as
+//  needed): fills the log and the converged step reports
+void oneBigStep
+(
+    solidModel& model,
+    linearSolver& solver,
+    const newtonControls& nc,
+    std::ostringstream& log,
+    std::vector<stepReport>& reports
+)
+{
+    stepControls big;
+    big.deltaT = 1;
+    staticSolver s(model, solver, nc, big, log);
+    s.run([&](const stepReport& r) { reports.push_back(r); });
+}
+
 } // namespace
 
 
@@ -193,12 +210,9 @@ TEST(staticSolver, DivergingStepIsCutBackAndReachesTheSmallStepAnswer)
     solidModel ref = smallStepPulledBar(5, law, *solver, nc);
 
     solidModel model = pulledBar(5, law);
-    stepControls big;
-    big.deltaT = 1;
     std::ostringstream log;
-    staticSolver s(model, *solver, nc, big, log);
     std::vector<stepReport> reports;
-    s.run([&](const stepReport& r) { reports.push_back(r); });
+    oneBigStep(model, *solver, nc, log, reports);
 
     EXPECT_NE(log.str().find("residual diverged"), std::string::npos)
         << log.str();
@@ -385,12 +399,9 @@ TEST(staticSolver, FailedMaterialUpdateIsReportedAndCutBack)
         smallStepPulledBar(5, barLaw(false, 1000, 1, 10), *solver, nc);
 
     solidModel model = pulledBar(5, law);
-    stepControls big;
-    big.deltaT = 1;
     std::ostringstream log;
-    staticSolver s(model, *solver, nc, big, log);
     std::vector<stepReport> reports;
-    s.run([&](const stepReport& r) { reports.push_back(r); });
+    oneBigStep(model, *solver, nc, log, reports);
     EXPECT_NE(log.str().find("material update failed"), std::string::npos)
         << log.str();
     ASSERT_FALSE(reports.empty());
