@@ -6,6 +6,7 @@ Description
     material-point states (see solidModel.H).
 \*---------------------------------------------------------------------------*/
 #include "solidModel.H"
+#include "contactModel.H"
 #include "sparsityPattern.H"
 #include "formError.H"
 #include "wallClock.H"
@@ -94,6 +95,11 @@ struct solidModel::impl
     vecX fint;
     vecX fext;
 
+    //- Contact (optional) and the bordered Newton matrix it needs
+    std::shared_ptr<contactModel> contact;
+    sparseMatrix Ksys;
+    std::vector<Eigen::Triplet<double>> triplets;
+
     phaseTimes times;
 
     int nDofs() const { return mesh.nNodes()*nDim; }
@@ -163,7 +169,57 @@ struct solidModel::impl
 
     void build();
     void assembleExternal(double t, bool wantTangent);
+
+    //- Ksys = [K_ff 0; 0 0] + contact triplets (nodal dofs mapped to
+    //  their free equations, prescribed rows/columns dropped); bumps the
+    //  revision when the structure differs from the last one
+    void buildSystemMatrix();
 };
+
+
+void solidModel::impl::buildSystemMatrix()
+{
+    const int nFree = numbering.nFree();
+    const int nAll = nFree + contact->nUnknowns();
+    const int N = nDofs();
+    std::vector<Eigen::Triplet<double>> all;
+    all.reserve(Kff.nonZeros() + triplets.size());
+    for (int j = 0; j < Kff.outerSize(); ++j)
+    {
+        for (sparseMatrix::InnerIterator it(Kff, j); it; ++it)
+        {
+            all.emplace_back(int(it.row()), int(it.col()), it.value());
+        }
+    }
+    const auto map = [&](int i)
+    {
+        return i < N ? numbering.equation[i] : nFree + (i - N);
+    };
+    for (const auto& tr : triplets)
+    {
+        const int i = map(tr.row());
+        const int j = map(tr.col());
+        if (i >= 0 && j >= 0) all.emplace_back(i, j, tr.value());
+    }
+    sparseMatrix K(nAll, nAll);
+    K.setFromTriplets(all.begin(), all.end());
+    K.makeCompressed();
+    const bool same =
+        Ksys.rows() == nAll
+     && Ksys.nonZeros() == K.nonZeros()
+     && std::equal
+        (
+            K.outerIndexPtr(), K.outerIndexPtr() + nAll + 1,
+            Ksys.outerIndexPtr()
+        )
+     && std::equal
+        (
+            K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros(),
+            Ksys.innerIndexPtr()
+        );
+    Ksys = std::move(K);
+    if (!same) ++revision;
+}
 
 
 std::vector<solidModel::impl::faceRef>
@@ -578,7 +634,7 @@ int solidModel::nPrescribedDofs() const
 
 bool solidModel::unsymmetric() const
 {
-    if (!impl_->pressures.empty()) return true;
+    if (!impl_->pressures.empty() || impl_->contact) return true;
     for (const auto& b : impl_->blocks)
     {
         if (!b.mat->symmetricTangent()) return true;
@@ -731,18 +787,99 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
     }
 
     const int nFree = m.numbering.nFree();
-    residual.resize(nFree);
+    m.times.assembly += secondsSince(start);
+    if (!m.contact)
+    {
+        residual.resize(nFree);
+        for (int k = 0; k < nFree; ++k)
+        {
+            const int d = m.numbering.freeDofs[k];
+            residual(k) = m.fext(d) - m.fint(d);
+        }
+        return residual.allFinite();
+    }
+
+    // Contact: forces into f_ext, its equations after the free dofs, and
+    // the Newton matrix K_ff bordered by the contact blocks
+    const auto contactStart = std::chrono::steady_clock::now();
+    const int nC = m.contact->nUnknowns();
+    vecX rc;
+    m.triplets.clear();
+    m.contact->evaluate
+    (
+        t, m.U, m.fext, rc, wantTangent ? &m.triplets : nullptr
+    );
+    residual.resize(nFree + nC);
     for (int k = 0; k < nFree; ++k)
     {
         const int d = m.numbering.freeDofs[k];
         residual(k) = m.fext(d) - m.fint(d);
     }
-    m.times.assembly += secondsSince(start);
+    residual.tail(nC) = rc;
+    if (wantTangent) m.buildSystemMatrix();
+    m.times.contact += secondsSince(contactStart);
     return residual.allFinite();
 }
 
 
 const sparseMatrix& solidModel::Kff() const { return impl_->Kff; }
+
+const sparseMatrix& solidModel::K() const
+{
+    return impl_->contact ? impl_->Ksys : impl_->Kff;
+}
+
+
+int solidModel::nUnknowns() const
+{
+    return nFreeDofs() + (impl_->contact ? impl_->contact->nUnknowns() : 0);
+}
+
+
+contactModel* solidModel::contact() const
+{
+    return impl_->contact.get();
+}
+
+
+void solidModel::setContact(std::shared_ptr<contactModel> contact)
+{
+    impl_->contact = std::move(contact);
+    ++impl_->revision;
+}
+
+
+void solidModel::releaseTool(const std::string& tool, double t0, double t1)
+{
+    impl& m = *impl_;
+    if (!m.contact)
+    {
+        throw inputError(tool, "releaseTool: the model has no contact");
+    }
+    if (!(t1 > t0))
+    {
+        throw inputError("endTime", "release ramp needs t1 > t0");
+    }
+    for (const auto& f : m.contact->releaseTool(tool, m.Ucommitted))
+    {
+        m.released.push_back({f.first, f.second, t0, t1});
+    }
+    ++m.revision;
+}
+
+
+void solidModel::beginIncrement(double t0, double t1)
+{
+    impl& m = *impl_;
+    if (m.contact) m.contact->beginIncrement(t0, t1, m.Ucommitted);
+}
+
+
+std::string solidModel::iterationNote() const
+{
+    if (!impl_->contact) return "";
+    return "  closed " + std::to_string(impl_->contact->nClosed());
+}
 const sparseMatrix& solidModel::Kfp() const { return impl_->Kfp; }
 
 
@@ -779,7 +916,17 @@ void solidModel::addToFree(const vecX& dUf)
 {
     impl& m = *impl_;
     m.requireFinalised("addToFree");
-    if (dUf.size() != m.numbering.nFree())
+    const int nFree = m.numbering.nFree();
+    if (m.contact && dUf.size() == nFree + m.contact->nUnknowns())
+    {
+        for (int k = 0; k < nFree; ++k)
+        {
+            m.U(m.numbering.freeDofs[k]) += dUf(k);
+        }
+        m.contact->addToUnknowns(dUf.tail(m.contact->nUnknowns()));
+        return;
+    }
+    if (dUf.size() != nFree)
     {
         throw numericalError
         (
@@ -851,6 +998,7 @@ void solidModel::commit()
     impl& m = *impl_;
     m.Ucommitted = m.U;
     m.committed = m.trial;
+    if (m.contact) m.contact->commit(m.U);
 }
 
 
@@ -859,6 +1007,7 @@ void solidModel::revert()
     impl& m = *impl_;
     m.U = m.Ucommitted;
     m.trial = m.committed;
+    if (m.contact) m.contact->revert();
 }
 
 

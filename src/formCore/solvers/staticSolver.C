@@ -117,13 +117,13 @@ vecX staticSolver::solveLinear(const vecX& rhs)
      || analysedRevision_ != model_.patternRevision()
     )
     {
-        solver_.analyzePattern(model_.Kff());
+        solver_.analyzePattern(model_.K());
         patternAnalysed_ = true;
         analysedRevision_ = model_.patternRevision();
     }
     try
     {
-        solver_.factorize(model_.Kff());
+        solver_.factorize(model_.K());
     }
     catch (...)
     {
@@ -276,10 +276,11 @@ bool staticSolver::solveIncrement(double t0, double t1, stepReport& report)
 }
 
 
-bool staticSolver::newton(double /*t0*/, double t1, stepReport& report)
+bool staticSolver::newton(double t0, double t1, stepReport& report)
 {
-    const int nFree = model_.nFreeDofs();
+    const int nFree = model_.nUnknowns();
     vecX r;
+    model_.beginIncrement(t0, t1);
 
     // Residual at the committed state with the loads of t1
     const vecX dUp = model_.prescribedIncrement(t1);
@@ -297,7 +298,11 @@ bool staticSolver::newton(double /*t0*/, double t1, stepReport& report)
     // the first right-hand side as -K_fp dU_p, so the first update already
     // carries the elastic response to the imposed motion
     vecX rhs = r;
-    if (nFree > 0 && dUp.size() > 0) rhs.noalias() -= model_.Kfp()*dUp;
+    if (nFree > 0 && dUp.size() > 0)
+    {
+        // Contact unknowns (after the free dofs) get no predictor term
+        rhs.head(model_.nFreeDofs()).noalias() -= model_.Kfp()*dUp;
+    }
     model_.applyPrescribed(t1);
 
     const double r0 = rhs.norm();
@@ -385,10 +390,10 @@ bool staticSolver::newton(double /*t0*/, double t1, stepReport& report)
         (
             line, sizeof(line),
             "    iter %2d  |r| %.3e  |r|/ref %.3e  |dU| %.3e  energy %.3e"
-            "  beta %.3g\n",
+            "  beta %.3g",
             i, rNorm, rRel, dUNorm, energyRatio, beta
         );
-        log_<< line;
+        log_<< line << model_.iterationNote() << '\n';
 
         if (!std::isfinite(rNorm))
         {

@@ -1,0 +1,755 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Node-to-rigid-segment contact by constraint functions (contactModel.H).
+\*---------------------------------------------------------------------------*/
+#include "contactModel.H"
+#include "constraintFunctions.H"
+#include "solidElement.H"
+#include "formError.H"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace form
+{
+
+namespace
+{
+
+//- Rotation by +90 degrees: t = R n for n = (t_y, -t_x)
+const Eigen::Matrix2d R90 = (Eigen::Matrix2d() << 0, -1, 1, 0).finished();
+
+} // namespace
+
+
+struct contactModel::impl
+{
+    const feMesh* mesh = nullptr;
+    analysisType analysis = analysisType::planeStrain;
+    std::vector<rigidToolSpec> tools;
+    std::vector<contactPairSpec> pairSpecs;
+    contactControls controls;
+    double k = 1;
+    double epsN = 0;
+    double epsT = 0;
+    int nDofs = 0;
+
+    struct pairData
+    {
+        int tool = 0;
+        double mu = 0;
+        std::vector<int> nodes;
+        std::vector<std::vector<int>> faces;   //!< face node lists
+        int first = 0;          //!< index of the first unknown
+        int perNode = 1;        //!< 1 (frictionless) or 2
+        std::vector<double> xiCommitted;
+        std::vector<int> status;   //!< 1 closed, 0 open, -1 unknown
+        std::vector<int> flips;
+        bool active = true;
+        bool touched = false;
+    };
+    std::vector<pairData> pairs;
+
+    //- Unknown index of each force-controlled tool's z (-1: none)
+    std::vector<int> toolUnknown;
+    std::vector<bool> toolReleased;
+    std::vector<Eigen::Vector2d> toolForce;
+
+    vecX x;
+    vecX xCommitted;
+    bool xiInitialised = false;
+    double tEvaluated = 0;
+    double tCommitted = 0;
+    int nClosed = 0;
+
+    int findTool(const std::string& name) const
+    {
+        for (std::size_t i = 0; i < tools.size(); ++i)
+        {
+            if (tools[i].name == name) return int(i);
+        }
+        std::string valid;
+        for (const auto& t : tools) valid += " " + t.name;
+        throw inputError(name, "unknown tool '" + name + "'; defined:" + valid);
+    }
+
+    Eigen::Vector2d translation(int T, double t) const
+    {
+        const rigidToolSpec& tool = tools[T];
+        Eigen::Vector2d d = Eigen::Vector2d::Zero();
+        if (tool.translation) d = tool.translation(t);
+        if (toolUnknown[T] >= 0) d += x(toolUnknown[T])*tool.direction;
+        return d;
+    }
+
+    Eigen::Vector2d position(int node, const vecX& U) const
+    {
+        return Eigen::Vector2d
+        (
+            mesh->X(node, 0) + U(2*node),
+            mesh->X(node, 1) + U(2*node + 1)
+        );
+    }
+
+    void initialiseXi(const vecX& U, double t)
+    {
+        for (pairData& p : pairs)
+        {
+            const Eigen::Vector2d d = translation(p.tool, t);
+            for (std::size_t a = 0; a < p.nodes.size(); ++a)
+            {
+                p.xiCommitted[a] =
+                    tools[p.tool].profile->project(position(p.nodes[a], U) - d)
+                   .xi;
+            }
+        }
+        xiInitialised = true;
+    }
+
+    void approach(int T, double t1, const vecX& U);
+};
+
+
+contactModel::contactModel
+(
+    const feMesh& mesh,
+    analysisType analysis,
+    double modulus,
+    std::vector<rigidToolSpec> tools,
+    std::vector<contactPairSpec> pairs,
+    contactControls controls
+)
+:
+    impl_(std::make_shared<impl>())
+{
+    impl& m = *impl_;
+    m.mesh = &mesh;
+    m.analysis = analysis;
+    m.tools = std::move(tools);
+    m.pairSpecs = std::move(pairs);
+    m.controls = controls;
+    m.nDofs = mesh.nNodes()*mesh.nDim;
+
+    if (mesh.nDim != 2 || analysis == analysisType::solid3D)
+    {
+        throw inputError
+        (
+            "contact",
+            "contact with rigid profiles is implemented for 2D (plane strain"
+            " and axisymmetric) models only"
+        );
+    }
+    if (!(modulus > 0))
+    {
+        throw inputError("contact", "contactModel needs a positive modulus");
+    }
+    for (const rigidToolSpec& t : m.tools)
+    {
+        if (!t.profile)
+        {
+            throw inputError(t.name, "tool '" + t.name + "' has no profile");
+        }
+        if (t.forceControlled)
+        {
+            if (!t.force)
+            {
+                throw inputError
+                (
+                    t.name + "/force",
+                    "force-controlled tool '" + t.name + "' has no force"
+                );
+            }
+            if (std::abs(t.direction.norm() - 1) > 1e-12)
+            {
+                throw inputError
+                (
+                    t.name + "/direction",
+                    "tool '" + t.name + "': direction must be a unit vector"
+                );
+            }
+        }
+    }
+
+    // Contactor nodes and faces per pair; spacing and radius for k, eps
+    double lengthSum = 0;
+    int nSpacings = 0;
+    double radiusSum = 0;
+    int nRadius = 0;
+    int nUnknowns = 0;
+    for (const contactPairSpec& ps : m.pairSpecs)
+    {
+        impl::pairData p;
+        p.tool = m.findTool(ps.tool);
+        p.mu = ps.friction;
+        if (!(p.mu >= 0))
+        {
+            throw inputError
+            (
+                ps.name + "/friction",
+                "pair '" + ps.name + "': friction must be >= 0"
+            );
+        }
+        auto it = mesh.faceSets.find(ps.faceSet);
+        if (it == mesh.faceSets.end() || it->second.empty())
+        {
+            std::string valid;
+            for (const auto& s : mesh.faceSets) valid += " " + s.first;
+            throw inputError
+            (
+                ps.name + "/patch",
+                "pair '" + ps.name + "': unknown or empty contactor patch '"
+              + ps.faceSet + "'; valid:" + valid
+            );
+        }
+        std::set<int> nodeSet;
+        for (const feFace& f : it->second)
+        {
+            p.faces.push_back(f.nodes);
+            nodeSet.insert(f.nodes.begin(), f.nodes.end());
+            // Spacing: face length (its largest node distance, the end
+            // nodes) over its node intervals
+            const int n = int(f.nodes.size());
+            double L = 0;
+            for (int a = 0; a < n; ++a)
+            {
+                for (int b = a + 1; b < n; ++b)
+                {
+                    L = std::max
+                    (
+                        L,
+                        (mesh.X.row(f.nodes[a]) - mesh.X.row(f.nodes[b])).norm()
+                    );
+                }
+            }
+            lengthSum += L;
+            nSpacings += n - 1;
+        }
+        p.nodes.assign(nodeSet.begin(), nodeSet.end());
+        for (int node : p.nodes)
+        {
+            radiusSum += std::abs(mesh.X(node, 0));
+            ++nRadius;
+        }
+        p.perNode = p.mu > 0 ? 2 : 1;
+        p.first = nUnknowns;
+        nUnknowns += p.perNode*int(p.nodes.size());
+        p.xiCommitted.assign(p.nodes.size(), 0);
+        p.status.assign(p.nodes.size(), -1);
+        p.flips.assign(p.nodes.size(), 0);
+        m.pairs.push_back(std::move(p));
+    }
+    m.toolUnknown.assign(m.tools.size(), -1);
+    for (std::size_t T = 0; T < m.tools.size(); ++T)
+    {
+        if (m.tools[T].forceControlled) m.toolUnknown[T] = nUnknowns++;
+    }
+    m.toolReleased.assign(m.tools.size(), false);
+    m.toolForce.assign(m.tools.size(), Eigen::Vector2d::Zero());
+
+    const double spacing = nSpacings ? lengthSum/nSpacings : 1.0;
+    double depth = 1;
+    if (analysis == analysisType::axisymmetric)
+    {
+        const double rbar = nRadius ? radiusSum/nRadius : 0;
+        depth = 2*M_PI*std::max(rbar, spacing);
+    }
+    m.k = controls.stiffness > 0 ? controls.stiffness : modulus*depth;
+    m.epsN =
+        controls.epsilonN > 0 ? controls.epsilonN : std::pow(1e-5*spacing, 2);
+    m.epsT =
+        controls.epsilonT > 0 ? controls.epsilonT : std::pow(1e-4*spacing, 2);
+
+    m.x = vecX::Zero(nUnknowns);
+    m.xCommitted = m.x;
+}
+
+
+int contactModel::nUnknowns() const { return int(impl_->x.size()); }
+const vecX& contactModel::unknowns() const { return impl_->x; }
+
+void contactModel::addToUnknowns(const vecX& dx)
+{
+    if (dx.size() != impl_->x.size())
+    {
+        throw numericalError
+        (
+            "contactModel::addToUnknowns: size " + std::to_string(dx.size())
+          + " for " + std::to_string(impl_->x.size()) + " unknowns"
+        );
+    }
+    impl_->x += dx;
+}
+
+
+// Quasi-static approach of a force-controlled tool that touches nothing:
+// translate it along e until the first contactor node ahead of it touches.
+// For a node with normal n and gap g, a move by dz along e closes the gap
+// by dz (n.e) to first order; a few passes make it exact on curved tools.
+void contactModel::impl::approach(int T, double t1, const vecX& U)
+{
+    const rigidToolSpec& tool = tools[T];
+    const int iz = toolUnknown[T];
+    for (int pass = 0; pass < 20; ++pass)
+    {
+        const Eigen::Vector2d d = translation(T, t1);
+        double best = std::numeric_limits<double>::infinity();
+        bool anyAhead = false;
+        for (const pairData& p : pairs)
+        {
+            if (p.tool != T) continue;
+            for (int node : p.nodes)
+            {
+                const profileProjection P =
+                    tool.profile->project(position(node, U) - d);
+                const double ne = P.normal.dot(tool.direction);
+                if (ne < 0.1) continue;
+                anyAhead = true;
+                best = std::min(best, P.gap/ne);
+            }
+        }
+        if (!anyAhead)
+        {
+            std::string pairNames;
+            for (const auto& ps : pairSpecs)
+            {
+                if (ps.tool == tool.name) pairNames += " " + ps.name;
+            }
+            throw inputError
+            (
+                tool.name,
+                "force-controlled tool '" + tool.name + "' moves along ("
+              + formatNumber(tool.direction(0)) + " "
+              + formatNumber(tool.direction(1)) + ") but no contactor node"
+                " of its pairs (" + pairNames + " ) lies ahead of it: it"
+                " would never touch the body"
+            );
+        }
+        // Touching (within the constraint's corner) or already pressed
+        if (best <= std::sqrt(epsN)) return;
+        x(iz) += best;
+        xCommitted(iz) = x(iz);
+    }
+}
+
+
+void contactModel::beginIncrement(double t0, double t1, const vecX& U)
+{
+    impl& m = *impl_;
+    if (!m.xiInitialised)
+    {
+        m.tCommitted = t0;
+        m.initialiseXi(U, t0);
+    }
+    for (impl::pairData& p : m.pairs)
+    {
+        std::fill(p.flips.begin(), p.flips.end(), 0);
+    }
+    for (std::size_t T = 0; T < m.tools.size(); ++T)
+    {
+        if (m.toolUnknown[T] < 0 || m.toolReleased[T]) continue;
+        if (m.tools[T].force(t1) == 0) continue;
+        // Approach only when none of the tool's nodes carries force
+        bool pressed = false;
+        for (const impl::pairData& p : m.pairs)
+        {
+            if (p.tool != int(T)) continue;
+            for (std::size_t a = 0; a < p.nodes.size(); ++a)
+            {
+                if (p.status[a] == 1) pressed = true;
+            }
+        }
+        if (!pressed) m.approach(int(T), t1, U);
+    }
+}
+
+
+void contactModel::evaluate
+(
+    double t,
+    const vecX& U,
+    vecX& fext,
+    vecX& r,
+    std::vector<triplet>* K
+)
+{
+    impl& m = *impl_;
+    const double k = m.k;
+    const int N = m.nDofs;
+    r.setZero(nUnknowns());
+    m.tEvaluated = t;
+    m.nClosed = 0;
+    std::fill(m.toolForce.begin(), m.toolForce.end(), Eigen::Vector2d::Zero());
+
+    const auto add = [K](int i, int j, double v)
+    {
+        K->emplace_back(i, j, v);
+    };
+
+    for (impl::pairData& p : m.pairs)
+    {
+        const int T = p.tool;
+        const rigidToolSpec& tool = m.tools[T];
+        const int nNodes = int(p.nodes.size());
+        if (!p.active)
+        {
+            // Released: multipliers driven to zero, no force
+            for (int j = 0; j < p.perNode*nNodes; ++j)
+            {
+                const int q = p.first + j;
+                r(q) = -k*m.x(q);
+                if (K) add(N + q, N + q, k);
+            }
+            continue;
+        }
+        const Eigen::Vector2d d = m.translation(T, t);
+        const int iz = m.toolUnknown[T];
+        const Eigen::Vector2d e = tool.direction;
+
+        for (int a = 0; a < nNodes; ++a)
+        {
+            const int node = p.nodes[a];
+            const profileProjection P =
+                tool.profile->project(m.position(node, U) - d);
+            const int il = p.first + p.perNode*a;
+            const int it = il + 1;
+            const double lambda = m.x(il);
+            const double tau = p.perNode == 2 ? m.x(it) : 0.0;
+            const Eigen::Vector2d& n = P.normal;
+            const Eigen::Vector2d& tv = P.tangent;
+
+            const normalConstraint c =
+                normalConstraintFunction(P.gap, lambda, m.epsN);
+            const Eigen::Vector2d f = k*(lambda*n + tau*tv);
+            fext(2*node) += f(0);
+            fext(2*node + 1) += f(1);
+            m.toolForce[T] += f;
+            r(il) = k*c.w;
+
+            const int closed = lambda > P.gap ? 1 : 0;
+            m.nClosed += closed;
+            if (closed) p.touched = true;
+            if (p.status[a] >= 0 && p.status[a] != closed && K)
+            {
+                if (++p.flips[a] > m.controls.maxStatusChanges)
+                {
+                    throw numericalError
+                    (
+                        "contact status chattering: node " + std::to_string(node)
+                      + " at (" + formatNumber(m.position(node, U)(0)) + " "
+                      + formatNumber(m.position(node, U)(1)) + ") of pair '"
+                      + m.pairSpecs[&p - m.pairs.data()].name
+                      + "' switched between open and closed "
+                      + std::to_string(p.flips[a]) + " times in this step"
+                        " (maxStatusChanges "
+                      + std::to_string(m.controls.maxStatusChanges) + ")"
+                    );
+                }
+            }
+            if (K) p.status[a] = closed;
+
+            frictionConstraint fc;
+            if (p.perNode == 2)
+            {
+                const double s = P.xi - p.xiCommitted[a];
+                fc = frictionConstraintFunction(s, tau, lambda, p.mu, m.epsT);
+                r(it) = k*fc.v;
+            }
+            if (!K) continue;
+
+            // Derivatives with respect to the node position y (= d/du)
+            const Eigen::Matrix2d dN = P.dNormalDY;
+            const Eigen::Matrix2d dT = R90*dN;
+            const Eigen::Matrix2d Kuu = -k*(lambda*dN + tau*dT);
+            const Eigen::RowVector2d Klu = -k*c.dwdg*n.transpose();
+            Eigen::RowVector2d Ktu = Eigen::RowVector2d::Zero();
+            if (p.perNode == 2) Ktu = -k*fc.dvds*P.dXidY.transpose();
+
+            for (int i = 0; i < 2; ++i)
+            {
+                const int di = 2*node + i;
+                for (int j = 0; j < 2; ++j) add(di, 2*node + j, Kuu(i, j));
+                add(di, N + il, -k*n(i));
+                add(N + il, di, Klu(i));
+                if (p.perNode == 2)
+                {
+                    add(di, N + it, -k*tv(i));
+                    add(N + it, di, Ktu(i));
+                }
+            }
+            add(N + il, N + il, -k*c.dwdl);
+            if (p.perNode == 2)
+            {
+                add(N + it, N + it, -k*fc.dvdtau);
+                add(N + it, N + il, -k*fc.dvdl);
+            }
+
+            if (iz < 0) continue;
+            // Force-controlled tool: y = x - z e, so d/dz = -e . d/dy; and
+            // its equation r_z = F - e . sum f
+            const Eigen::Vector2d Kuz = -Kuu*e;
+            for (int i = 0; i < 2; ++i)
+            {
+                add(2*node + i, N + iz, Kuz(i));
+                // K_z,u = e . df/dy = -e^T Kuu
+                add(N + iz, 2*node + i, -(e.transpose()*Kuu)(i));
+            }
+            add(N + il, N + iz, -Klu.dot(e));
+            add(N + iz, N + il, k*e.dot(n));
+            if (p.perNode == 2)
+            {
+                add(N + it, N + iz, -Ktu.dot(e));
+                add(N + iz, N + it, k*e.dot(tv));
+            }
+            add(N + iz, N + iz, e.dot(Kuu*e));
+        }
+    }
+
+    // Force-controlled tools
+    for (std::size_t T = 0; T < m.tools.size(); ++T)
+    {
+        const int iz = m.toolUnknown[T];
+        if (iz < 0) continue;
+        const rigidToolSpec& tool = m.tools[T];
+        const double F = m.toolReleased[T] ? 0.0 : tool.force(t);
+        if (m.toolReleased[T] || F == 0)
+        {
+            // Holds its position
+            r(iz) = k*(m.xCommitted(iz) - m.x(iz));
+            if (K) add(N + iz, N + iz, k);
+            continue;
+        }
+        r(iz) = F - tool.direction.dot(m.toolForce[T]);
+    }
+}
+
+
+void contactModel::commit(const vecX& U)
+{
+    impl& m = *impl_;
+    m.xCommitted = m.x;
+    m.tCommitted = m.tEvaluated;
+    m.initialiseXi(U, m.tCommitted);
+}
+
+
+void contactModel::revert()
+{
+    impl& m = *impl_;
+    m.x = m.xCommitted;
+}
+
+
+std::vector<std::pair<int, double>> contactModel::releaseTool
+(
+    const std::string& tool,
+    const vecX& U
+)
+{
+    impl& m = *impl_;
+    const int T = m.findTool(tool);
+    std::vector<std::pair<int, double>> forces;
+    const Eigen::Vector2d d = m.translation(T, m.tCommitted);
+    for (impl::pairData& p : m.pairs)
+    {
+        if (p.tool != T || !p.active) continue;
+        for (std::size_t a = 0; a < p.nodes.size(); ++a)
+        {
+            const int node = p.nodes[a];
+            const profileProjection P =
+                m.tools[T].profile->project(m.position(node, U) - d);
+            const int il = p.first + p.perNode*int(a);
+            const double tau = p.perNode == 2 ? m.xCommitted(il + 1) : 0.0;
+            const Eigen::Vector2d f =
+                m.k*(m.xCommitted(il)*P.normal + tau*P.tangent);
+            forces.push_back({2*node, f(0)});
+            forces.push_back({2*node + 1, f(1)});
+        }
+        p.active = false;
+    }
+    m.toolReleased[T] = true;
+    return forces;
+}
+
+
+bool contactModel::released(const std::string& tool) const
+{
+    return impl_->toolReleased[impl_->findTool(tool)];
+}
+
+
+const std::vector<rigidToolSpec>& contactModel::tools() const
+{
+    return impl_->tools;
+}
+
+
+const std::vector<contactPairSpec>& contactModel::pairs() const
+{
+    return impl_->pairSpecs;
+}
+
+
+Eigen::Vector2d contactModel::toolTranslation
+(
+    const std::string& tool,
+    double t
+) const
+{
+    return impl_->translation(impl_->findTool(tool), t);
+}
+
+
+Eigen::Vector2d contactModel::toolForce(const std::string& tool) const
+{
+    return impl_->toolForce[impl_->findTool(tool)];
+}
+
+
+std::vector<contactNodeResult> contactModel::pairResults
+(
+    const std::string& pair,
+    const vecX& U,
+    double t
+) const
+{
+    const impl& m = *impl_;
+    int ip = -1;
+    for (std::size_t i = 0; i < m.pairSpecs.size(); ++i)
+    {
+        if (m.pairSpecs[i].name == pair) ip = int(i);
+    }
+    if (ip < 0)
+    {
+        throw inputError(pair, "unknown contact pair '" + pair + "'");
+    }
+    const impl::pairData& p = m.pairs[ip];
+
+    // Consistent edge weights int N_a ds (per depth or full ring) on the
+    // current configuration
+    std::map<int, double> weight;
+    for (const std::vector<int>& face : p.faces)
+    {
+        const int n = int(face.size());
+        matX X(n, 2);
+        for (int a = 0; a < n; ++a) X.row(a) = m.position(face[a], U);
+        const vecX f =
+            edgeLoad::deadTraction(X, Eigen::Vector2d(1, 0), m.analysis);
+        for (int a = 0; a < n; ++a) weight[face[a]] += f(2*a);
+    }
+
+    std::vector<contactNodeResult> results;
+    const Eigen::Vector2d d = m.translation(p.tool, t);
+    for (std::size_t a = 0; a < p.nodes.size(); ++a)
+    {
+        contactNodeResult res;
+        res.node = p.nodes[a];
+        res.x = m.position(res.node, U);
+        const profileProjection P =
+            m.tools[p.tool].profile->project(res.x - d);
+        const int il = p.first + p.perNode*int(a);
+        const double lambda = p.active ? m.x(il) : 0.0;
+        const double tau = p.active && p.perNode == 2 ? m.x(il + 1) : 0.0;
+        res.gap = P.gap;
+        res.normalForce = m.k*lambda;
+        res.tangentialForce = m.k*tau;
+        res.weight = weight[res.node];
+        res.pressure = res.weight > 0 ? res.normalForce/res.weight : 0;
+        res.shear = res.weight > 0 ? res.tangentialForce/res.weight : 0;
+        res.slip = P.xi - p.xiCommitted[a];
+        res.closed = lambda > P.gap;
+        results.push_back(res);
+    }
+    return results;
+}
+
+
+int contactModel::nClosed() const { return impl_->nClosed; }
+
+bool contactModel::touched(const std::string& tool) const
+{
+    const int T = impl_->findTool(tool);
+    for (const auto& p : impl_->pairs)
+    {
+        if (p.tool == T && p.touched) return true;
+    }
+    return false;
+}
+
+double contactModel::stiffness() const { return impl_->k; }
+double contactModel::epsilonN() const { return impl_->epsN; }
+double contactModel::epsilonT() const { return impl_->epsT; }
+
+
+std::string contactModel::describe() const
+{
+    const impl& m = *impl_;
+    std::string s;
+    for (std::size_t i = 0; i < m.pairs.size(); ++i)
+    {
+        const auto& p = m.pairs[i];
+        const auto& ps = m.pairSpecs[i];
+        s += "pair " + ps.name + ": patch " + ps.faceSet + " ("
+          + std::to_string(p.nodes.size()) + " nodes) against tool "
+          + ps.tool + (m.tools[p.tool].forceControlled
+              ? " (force-controlled)" : " (motion)")
+          + ", friction " + formatNumber(p.mu) + "\n";
+    }
+    s += "k " + formatNumber(m.k) + ", sqrt(epsN) "
+      + formatNumber(std::sqrt(m.epsN)) + ", sqrt(epsT) "
+      + formatNumber(std::sqrt(m.epsT)) + ", unknowns "
+      + std::to_string(m.x.size());
+    return s;
+}
+
+
+std::vector<double> contactModel::state() const
+{
+    const impl& m = *impl_;
+    std::vector<double> s(m.xCommitted.data(),
+        m.xCommitted.data() + m.xCommitted.size());
+    for (const auto& p : m.pairs)
+    {
+        s.insert(s.end(), p.xiCommitted.begin(), p.xiCommitted.end());
+        s.push_back(p.active ? 1 : 0);
+        s.push_back(p.touched ? 1 : 0);
+    }
+    for (bool r : m.toolReleased) s.push_back(r ? 1 : 0);
+    s.push_back(m.tCommitted);
+    return s;
+}
+
+
+void contactModel::setState(const std::vector<double>& s)
+{
+    impl& m = *impl_;
+    std::size_t expected = m.x.size() + m.tools.size() + 1;
+    for (const auto& p : m.pairs) expected += p.nodes.size() + 2;
+    if (s.size() != expected)
+    {
+        throw numericalError
+        (
+            "contactModel::setState: " + std::to_string(s.size())
+          + " values for a contact state of " + std::to_string(expected)
+        );
+    }
+    std::size_t i = 0;
+    for (int j = 0; j < m.x.size(); ++j) m.x(j) = s[i++];
+    m.xCommitted = m.x;
+    for (auto& p : m.pairs)
+    {
+        for (double& xi : p.xiCommitted) xi = s[i++];
+        p.active = s[i++] > 0.5;
+        p.touched = s[i++] > 0.5;
+    }
+    for (std::size_t T = 0; T < m.tools.size(); ++T)
+    {
+        m.toolReleased[T] = s[i++] > 0.5;
+    }
+    m.tCommitted = s[i++];
+    m.xiInitialised = true;
+}
+
+} // namespace form

@@ -1,0 +1,322 @@
+// Constraint-function contact: the constraint functions (values on their
+// branches, derivatives against central differences, no cancellation far
+// from the corner), and the contact model's residual against finite
+// differences of its tangent, with friction, curved tool pieces and a
+// force-controlled tool; the tool approach, a tool that can never touch,
+// and chattering detection.
+#include "contactModel.H"
+#include "constraintFunctions.H"
+#include "structuredQuadMesh.H"
+#include "formError.H"
+#include <gtest/gtest.h>
+#include <cmath>
+#include <random>
+
+using namespace form;
+
+namespace
+{
+
+TEST(constraintFunctions, normalBranchesAndDerivatives)
+{
+    const double eps = 1e-6;
+    // On the solution set: g lambda = eps
+    for (double g : {1e-6, 1e-3, 0.1, 10.0})
+    {
+        const double l = eps/g;
+        EXPECT_NEAR(normalConstraintFunction(g, l, eps).w, 0, 1e-15*(g + l));
+    }
+    // Far from the corner w = min(g, lambda) - O(eps)
+    EXPECT_NEAR(normalConstraintFunction(5, 0, eps).w, -eps/5, 1e-13);
+    EXPECT_NEAR(normalConstraintFunction(-2, 3, eps).w, -2, 1e-6);
+    EXPECT_NEAR(normalConstraintFunction(1e8, 1e-3, 1e-12).w, 1e-3, 1e-15);
+
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(-3e-3, 3e-3);
+    for (int k = 0; k < 200; ++k)
+    {
+        const double g = u(gen), l = u(gen);
+        const normalConstraint c = normalConstraintFunction(g, l, eps);
+        const double h = 1e-8;
+        const double dg =
+            (normalConstraintFunction(g + h, l, eps).w
+           - normalConstraintFunction(g - h, l, eps).w)/(2*h);
+        const double dl =
+            (normalConstraintFunction(g, l + h, eps).w
+           - normalConstraintFunction(g, l - h, eps).w)/(2*h);
+        EXPECT_NEAR(c.dwdg, dg, 1e-6);
+        EXPECT_NEAR(c.dwdl, dl, 1e-6);
+        EXPECT_GE(c.dwdg, 0);
+        EXPECT_GE(c.dwdl, 0);
+    }
+}
+
+
+TEST(constraintFunctions, frictionLimitsAndDerivatives)
+{
+    const double epsT = 1e-8, mu = 0.2, lambda = 3;
+    // Sliding: tau = -mu lambda sign(s)
+    EXPECT_NEAR(frictionConstraintFunction(0.1, 0, lambda, mu, epsT).v,
+                mu*lambda, 1e-6);
+    const double tauSlide = -mu*lambda*0.1/std::sqrt(0.01 + epsT);
+    EXPECT_NEAR(frictionConstraintFunction(0.1, tauSlide, lambda, mu, epsT).v,
+                0, 1e-15);
+    // No contact: tau = 0
+    EXPECT_EQ(frictionConstraintFunction(0.1, 0, 0, mu, epsT).v, 0);
+
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<double> u(-3e-4, 3e-4);
+    for (int k = 0; k < 100; ++k)
+    {
+        const double s = u(gen), tau = 1e3*u(gen), l = 1e4*std::abs(u(gen));
+        const frictionConstraint c =
+            frictionConstraintFunction(s, tau, l, mu, epsT);
+        const double h = 1e-9;
+        const auto v = [&](double ss, double tt, double ll)
+        {
+            return frictionConstraintFunction(ss, tt, ll, mu, epsT).v;
+        };
+        EXPECT_NEAR(c.dvds, (v(s + h, tau, l) - v(s - h, tau, l))/(2*h),
+                    1e-5*std::max(1.0, std::abs(c.dvds)));
+        EXPECT_NEAR(c.dvdl, (v(s, tau, l + h) - v(s, tau, l - h))/(2*h), 1e-6);
+        EXPECT_NEAR(c.dvdtau, 1, 0);
+    }
+}
+
+
+//- A 9-node 3 x 1 strip under a filleted punch; pair "top"
+struct contactSetup
+{
+    feMesh mesh;
+    std::vector<rigidToolSpec> tools;
+
+    explicit contactSetup(bool forceControlled)
+    {
+        mesh = structuredQuadMesh
+        (
+            {{{0, 0}, {3, 0}, {3, 1}, {0, 1}}}, 3, 1, 9, "Q9P3", "steel"
+        );
+        // Punch above the strip: bottom face from x = -0.5 to 2.2 at y = 1
+        // (tool on the left when walking, i.e. above), a fillet of radius
+        // 0.4 at x = 2.2, and the side wall rising from it
+        rigidToolSpec punch;
+        punch.name = "punch";
+        punch.profile = std::make_shared<rigidProfile>
+        (
+            std::vector<Eigen::Vector2d>
+            {
+                {-0.5, 1.0}, {2.2, 1.0}, {2.2, 3}
+            },
+            std::vector<double>{0.4}
+        );
+        if (forceControlled)
+        {
+            punch.forceControlled = true;
+            punch.direction = Eigen::Vector2d(0, -1);
+            punch.force = [](double t) { return 1e3*t; };
+        }
+        else
+        {
+            punch.translation = [](double t)
+            {
+                return Eigen::Vector2d(0.3*t, -0.01*t);
+            };
+        }
+        tools.push_back(punch);
+    }
+
+    contactModel model(double friction, double epsN, double epsT) const
+    {
+        contactControls c;
+        c.epsilonN = epsN;
+        c.epsilonT = epsT;
+        c.maxStatusChanges = 1000;
+        return contactModel
+        (
+            mesh, analysisType::planeStrain, 2e5, tools,
+            {{"top", "top", "punch", friction}}, c
+        );
+    }
+};
+
+
+//- Residual [f_ext (nodal); r (contact)] at (U, x) and the dense tangent
+//  K = -dR/dq from the model's triplets
+void residualAndTangent
+(
+    contactModel& cm,
+    double t,
+    const vecX& U,
+    vecX& R,
+    matX* K
+)
+{
+    const int N = int(U.size());
+    vecX fext = vecX::Zero(N), r;
+    std::vector<contactModel::triplet> tr;
+    cm.evaluate(t, U, fext, r, K ? &tr : nullptr);
+    R.resize(N + r.size());
+    R << fext, r;
+    if (K)
+    {
+        K->setZero(R.size(), R.size());
+        for (const auto& x : tr) (*K)(x.row(), x.col()) += x.value();
+    }
+}
+
+
+void checkTangent(double friction, bool forceControlled)
+{
+    const contactSetup s(forceControlled);
+    // eps large enough for central differences to resolve the corner
+    contactModel cm = s.model(friction, 1e-6, 1e-6);
+    const int N = s.mesh.nNodes()*2;
+    const int nC = cm.nUnknowns();
+
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    vecX U = vecX::Zero(N);
+    // Strip pushed up against the punch face and sheared: some nodes in
+    // contact, some near the fillet, some away from it
+    for (int a = 0; a < s.mesh.nNodes(); ++a)
+    {
+        U(2*a) = 0.05*s.mesh.X(a, 1) + 0.002*u(gen);
+        U(2*a + 1) = 0.004*u(gen) + 0.001;
+    }
+    cm.beginIncrement(0, 0.5, vecX::Zero(N));
+    cm.commit(vecX::Zero(N));
+    vecX x(nC);
+    for (int j = 0; j < nC; ++j) x(j) = 2e-3*u(gen);
+    cm.addToUnknowns(x - cm.unknowns());
+
+    vecX R0;
+    matX K;
+    const double t = 0.5;
+    residualAndTangent(cm, t, U, R0, &K);
+
+    // Central differences over every nodal dof and unknown
+    const double h = 1e-7;
+    matX Kfd(R0.size(), R0.size());
+    for (int q = 0; q < N + nC; ++q)
+    {
+        vecX Rp, Rm;
+        vecX Up = U, Um = U;
+        vecX dx = vecX::Zero(nC);
+        if (q < N)
+        {
+            Up(q) += h;
+            Um(q) -= h;
+            residualAndTangent(cm, t, Up, Rp, nullptr);
+            residualAndTangent(cm, t, Um, Rm, nullptr);
+        }
+        else
+        {
+            dx(q - N) = h;
+            cm.addToUnknowns(dx);
+            residualAndTangent(cm, t, U, Rp, nullptr);
+            cm.addToUnknowns(-2*dx);
+            residualAndTangent(cm, t, U, Rm, nullptr);
+            cm.addToUnknowns(dx);
+        }
+        Kfd.col(q) = -(Rp - Rm)/(2*h);
+    }
+    const double scale = K.cwiseAbs().maxCoeff();
+    EXPECT_GT(scale, 0);
+    EXPECT_LT((K - Kfd).cwiseAbs().maxCoeff(), 1e-6*scale)
+        << "friction " << friction << " forceControlled " << forceControlled;
+}
+
+
+TEST(contactModel, tangentFrictionless)
+{
+    checkTangent(0, false);
+}
+
+TEST(contactModel, tangentWithFriction)
+{
+    checkTangent(0.3, false);
+}
+
+TEST(contactModel, tangentForceControlledTool)
+{
+    checkTangent(0.2, true);
+}
+
+
+TEST(contactModel, forceControlledToolApproachesTheBody)
+{
+    const contactSetup s(true);
+    contactModel cm = s.model(0, 0, 0);
+    const int N = s.mesh.nNodes()*2;
+    // Lift the tool 2 units above the strip, then begin a step
+    vecX lift = vecX::Zero(cm.nUnknowns());
+    lift(cm.nUnknowns() - 1) = -2;
+    cm.addToUnknowns(lift);
+    cm.commit(vecX::Zero(N));
+    cm.beginIncrement(0, 0.1, vecX::Zero(N));
+    double minGap = 1e30;
+    for (const auto& r : cm.pairResults("top", vecX::Zero(N), 0.1))
+    {
+        minGap = std::min(minGap, r.gap);
+    }
+    EXPECT_NEAR(minGap, 0, 1e-12);
+    EXPECT_NEAR(cm.toolTranslation("punch", 0.1)(1), 0, 1e-12);
+}
+
+
+TEST(contactModel, toolThatCannotTouchIsAnInputError)
+{
+    contactSetup s(true);
+    s.tools[0].direction = Eigen::Vector2d(0, 1);   // moving away
+    contactModel cm = s.model(0, 0, 0);
+    const int N = s.mesh.nNodes()*2;
+    try
+    {
+        cm.beginIncrement(0, 0.1, vecX::Zero(N));
+        FAIL() << "no error";
+    }
+    catch (const inputError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("punch"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("never touch"), std::string::npos);
+    }
+}
+
+
+TEST(contactModel, chatteringIsReported)
+{
+    const contactSetup s(false);
+    contactControls c;
+    c.maxStatusChanges = 4;
+    contactModel cm
+    (
+        s.mesh, analysisType::planeStrain, 2e5, s.tools,
+        {{"top", "top", "punch", 0}}, c
+    );
+    const int N = s.mesh.nNodes()*2;
+    const vecX U = vecX::Zero(N);
+    cm.beginIncrement(0, 1, U);
+    vecX fext(N), r;
+    std::vector<contactModel::triplet> tr;
+    bool thrown = false;
+    for (int k = 0; k < 10 && !thrown; ++k)
+    {
+        // Alternate every multiplier between "pressed" and "open"
+        const vecX x = vecX::Constant(cm.nUnknowns(), k % 2 ? 1.0 : 0.0);
+        cm.addToUnknowns(x - cm.unknowns());
+        fext.setZero();
+        try
+        {
+            cm.evaluate(1, U, fext, r, &tr);
+        }
+        catch (const numericalError& e)
+        {
+            thrown = true;
+            EXPECT_NE(std::string(e.what()).find("chattering"),
+                      std::string::npos) << e.what();
+        }
+    }
+    EXPECT_TRUE(thrown);
+}
+
+} // namespace
