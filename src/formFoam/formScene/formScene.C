@@ -5,8 +5,13 @@
 #include "OSspecific.H"
 #include "clockTime.H"
 #include "autoSolver.H"
+#include "springbackMeasure.H"
+#include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <limits>
+#include <numeric>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * Private Functions  * * * * * * * * * * * * //
 
@@ -84,8 +89,22 @@ void Foam::formScene::printScene() const
     {
         Info<< "    " << s.describe().c_str() << nl;
     }
-    Info<< "    analysis: static (no inertia)" << nl
-        << "    contact: none declared (not built)" << nl
+    Info<< "    analysis: static (no inertia)" << nl;
+    if (contact_)
+    {
+        Info<< "    contact (constraint functions):" << nl;
+        std::istringstream is(contact_->describe());
+        std::string line;
+        while (std::getline(is, line))
+        {
+            Info<< "        " << line.c_str() << nl;
+        }
+    }
+    else
+    {
+        Info<< "    contact: none declared (not built)" << nl;
+    }
+    Info
         << "    fluid: none declared (not built)" << nl
         << "    linear solver: " << linearSolver_->type().c_str() << nl
         << "    steps: t = " << steps_.startTime << " -> " << steps_.endTime
@@ -132,7 +151,7 @@ void Foam::formScene::readSchedule()
             d,
             {
                 "endTime", "deltaT", "maxDeltaT", "release", "hold", "pin",
-                "prescribe"
+                "prescribe", "releaseTools"
             }
         );
         processStep ps;
@@ -225,6 +244,22 @@ void Foam::formScene::applyActions(const processStep& step)
             }
         }
     }
+    if (d.found("releaseTools"))
+    {
+        if (!contact_)
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'releaseTools' in " << d.name() << ": the case"
+                << " declares no contact (constant/contactProperties)"
+                << exit(FatalIOError);
+        }
+        const wordList tools = d.get<wordList>("releaseTools");
+        Info<< "    release tools " << tools << nl;
+        contact_->releaseTools
+        (
+            tools, d, max(step.startTime, steps_.startTime), step.endTime
+        );
+    }
     if (d.found("pin"))
     {
         const dictionary& pd = d.subDict("pin");
@@ -315,12 +350,33 @@ void Foam::formScene::readSummary()
         {
             keys.append(wordList{"patch", "length"});
         }
+        else if
+        (
+            contact_ && (type == "toolForce" || type == "toolPosition")
+        )
+        {
+            keys.append(wordList{"tool", "component"});
+        }
+        else if (type == "uChannelSpringback")
+        {
+            keys.append(wordList{"patch", "quantity"});
+            const word q = ed.get<word>("quantity");
+            if (!wordList{"theta1", "theta2", "rho"}.found(q))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'quantity' in " << ed.name() << ": unknown '"
+                    << q << "'; valid: theta1 theta2 rho"
+                    << exit(FatalIOError);
+            }
+        }
         else
         {
             FatalIOErrorInFunction(ed)
                 << "Unknown summary type '" << type << "' in " << ed.name()
                 << nl << "    Valid types: displacement position reaction"
-                << " circleRadius rotation bendingRadius" << exit(FatalIOError);
+                << " circleRadius rotation bendingRadius uChannelSpringback"
+                << (contact_ ? " toolForce toolPosition" : "")
+                << exit(FatalIOError);
         }
         checkKeywords(ed, keys);
         se.statistic = ed.getOrDefault<word>("statistic", "final");
@@ -335,8 +391,16 @@ void Foam::formScene::readSummary()
         se.atTime = ed.found("time");
         if (se.atTime) se.time = ed.get<scalar>("time");
         summary_.push_back(se);
-        // Validate points and patches now, not at the end of the run
-        evaluate(summary_.back());
+        // Validate points and patches now, not at the end of the run (a
+        // springback measure needs a formed channel: patch only)
+        if (type == "uChannelSpringback")
+        {
+            solids_[0].patchPoints(ed.get<word>("patch"), ed, false);
+        }
+        else
+        {
+            evaluate(summary_.back());
+        }
     }
 }
 
@@ -362,6 +426,50 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         const scalar theta = s.patchRotation(ed.get<word>("patch"), ed);
         value = mag(theta) > VSMALL ? ed.get<scalar>("length")/mag(theta) : GREAT;
     }
+    else if (type == "toolForce")
+    {
+        value = contact_->toolForce
+        (
+            ed.get<word>("tool"), planeComponent(ed.get<word>("component"), ed),
+            ed
+        );
+    }
+    else if (type == "toolPosition")
+    {
+        value = contact_->toolPosition
+        (
+            ed.get<word>("tool"), planeComponent(ed.get<word>("component"), ed),
+            summaryTime_, ed
+        );
+    }
+    else if (type == "uChannelSpringback")
+    {
+        // NUMISHEET'93 measures of the patch's current node line, ordered
+        // by the reference position along the strip (from the symmetry
+        // plane); a profile that is not (yet) a channel gives NaN
+        const word patch = ed.get<word>("patch");
+        const Eigen::MatrixXd X = s.patchPoints(patch, ed, false);
+        const Eigen::MatrixXd x = s.patchPoints(patch, ed, true);
+        std::vector<label> order(X.rows());
+        std::iota(order.begin(), order.end(), 0);
+        std::sort
+        (
+            order.begin(), order.end(),
+            [&](label a, label b) { return X(a, 0) < X(b, 0); }
+        );
+        std::vector<Eigen::Vector2d> profile;
+        for (const label i : order) profile.emplace_back(x(i, 0), x(i, 1));
+        try
+        {
+            const form::uChannelSpringback m = form::measureUChannel(profile);
+            const word q = ed.get<word>("quantity");
+            value = q == "theta1" ? m.theta1 : q == "theta2" ? m.theta2 : m.rho;
+        }
+        catch (const form::numericalError&)
+        {
+            value = std::numeric_limits<scalar>::quiet_NaN();
+        }
+    }
     else
     {
         const label comp = planeComponent(ed.get<word>("component"), ed);
@@ -386,6 +494,7 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
 
 void Foam::formScene::recordSummary(scalar time, bool first)
 {
+    summaryTime_ = time;
     const fileName dir = runTime_.path()/"postProcessing";
     mkDir(dir);
     const bool append = !first && isFile(dir/"history.dat");
@@ -486,6 +595,10 @@ void Foam::formScene::writeSummary
             scalar(newtonIterations)/max(label(1), nSteps)
         );
         os.writeEntry("cutbacks", cutbacks);
+        for (const auto& sw : stepWallTimes_)
+        {
+            os.writeEntry(word(sw.first + "WallTime"), sw.second);
+        }
         os.writeEntry("wallTime", wallTime);
     }
     Foam::mv(tmp, dir/"summary");
@@ -529,6 +642,10 @@ Foam::formScene::formScene(Time& runTime)
     for (const word& name : solidNames)
     {
         solids_.append(new solidRegion(runTime, name));
+    }
+    if (solidContact::declared(runTime))
+    {
+        contact_.reset(new solidContact(runTime, solids_[0]));
     }
 
     // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching
@@ -600,6 +717,7 @@ void Foam::formScene::run()
         runTime_.setTime(t, index);
         Info<< "    writing time " << runTime_.timeName() << endl;
         solid.write();
+        if (contact_) contact_->write(runTime_.timeName(), t);
         solid.model().times().output += outClock.elapsedTime();
     };
 
@@ -622,6 +740,7 @@ void Foam::formScene::run()
         applyActions(ps);
         if (schedule_.size() > 1) Info<< endl;
 
+        const scalar stepClockStart = clock.elapsedTime();
         form::stepControls sc = steps_;
         sc.startTime = max(ps.startTime, steps_.startTime);
         sc.endTime = ps.endTime;
@@ -676,6 +795,13 @@ void Foam::formScene::run()
                 }
             );
             nIterations += solver.totalIterations();
+            if (schedule_.size() > 1)
+            {
+                stepWallTimes_.push_back
+                (
+                    {ps.name, clock.elapsedTime() - stepClockStart}
+                );
+            }
         }
         catch (const form::numericalError& err)
         {
@@ -700,13 +826,23 @@ void Foam::formScene::run()
     Info<< nl << "Summary" << nl;
     writeSummary(nIterations, nSteps, nCutbacks, wallTime);
 
+    if (contact_) contact_->reportUntouched();
     const form::phaseTimes& t = solid.model().times();
     Info<< nl << "Time per phase (s)" << nl
         << "    assembly        " << t.assembly << nl
+        << "    contact         " << t.contact << nl
         << "    factorisation   " << t.factorisation << nl
         << "    solve           " << t.solve << nl
         << "    output          " << t.output << nl
         << "    total (wall)    " << wallTime << nl
         << "    steps " << nSteps << ", Newton iterations "
-        << nIterations << nl << nl << "End" << nl << endl;
+        << nIterations << nl;
+    if (nIterations > 0)
+    {
+        const scalar n = nIterations;
+        Info<< "Time per Newton iteration (ms): assembly "
+            << 1e3*t.assembly/n << ", contact " << 1e3*t.contact/n
+            << ", linear solve " << 1e3*(t.factorisation + t.solve)/n << nl;
+    }
+    Info<< nl << "End" << nl << endl;
 }

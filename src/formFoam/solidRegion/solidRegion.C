@@ -1,4 +1,5 @@
 #include "solidRegion.H"
+#include "contactModel.H"
 #include "dictionaryChecks.H"
 #include "Function1.H"
 #include "IFstream.H"
@@ -659,6 +660,14 @@ void Foam::solidRegion::write()
 
     bool ok = true;
     if (nHist) ok = feHistory.write() && ok;
+    if (model_->contact())
+    {
+        // Contact multipliers, tool positions, committed slip origins
+        const std::vector<double> cs = model_->contact()->state();
+        IOField<scalar> contactState(io("contactState"), scalarField(cs.size()));
+        forAll(contactState, i) contactState[i] = cs[i];
+        ok = contactState.write() && ok;
+    }
     ok = pointD.write() && ok;
     ok = D.write() && ok;
     ok = sigma.write() && ok;
@@ -757,6 +766,34 @@ bool Foam::solidRegion::readState(const word& timeName)
             }
         }
         model_->setMaterialStates(states);
+    }
+    if (model_->contact())
+    {
+        IOobject cio
+        (
+            "contactState", timeName, *mesh_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        if (!cio.typeHeaderOk<IOField<scalar>>(true))
+        {
+            FatalErrorInFunction
+                << "Restart state of region '" << name_ << "' at time "
+                << timeName << " has no contact state (contactState), which"
+                << " the contact pairs of constant/contactProperties need"
+                << exit(FatalError);
+        }
+        IOField<scalar> c(cio);
+        try
+        {
+            model_->contact()->setState(std::vector<double>(c.begin(), c.end()));
+        }
+        catch (const form::numericalError& e)
+        {
+            FatalErrorInFunction
+                << "Restart state " << c.objectPath() << ": " << e.what()
+                << " (was constant/contactProperties changed?)"
+                << exit(FatalError);
+        }
     }
     return true;
 }

@@ -1,0 +1,347 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    constant/contactProperties -> form::contactModel (see solidContact.H).
+\*---------------------------------------------------------------------------*/
+#include "solidContact.H"
+#include "dictionaryChecks.H"
+#include "formError.H"
+#include "OSspecific.H"
+#include "vector2D.H"
+#include <fstream>
+
+// * * * * * * * * * * * * * * * Private Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::solidContact::toolIndex
+(
+    const word& tool,
+    const dictionary& dict
+) const
+{
+    const label i = toolNames_.find(tool);
+    if (i < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown tool '" << tool << "' in " << dict.name() << nl
+            << "    Tools of constant/contactProperties: " << toolNames_
+            << exit(FatalIOError);
+    }
+    return i;
+}
+
+
+form::rigidToolSpec Foam::solidContact::readTool
+(
+    const word& name,
+    const dictionary& td
+)
+{
+    checkKeywords
+    (
+        td, {"profile", "radii", "radius", "motion", "force", "direction"}
+    );
+    form::rigidToolSpec tool;
+    tool.name = name;
+
+    const List<vector2D> pts = td.get<List<vector2D>>("profile");
+    std::vector<Eigen::Vector2d> points;
+    for (const vector2D& p : pts) points.emplace_back(p.x(), p.y());
+    std::vector<double> radii;
+    if (td.found("radii") && td.found("radius"))
+    {
+        FatalIOErrorInFunction(td)
+            << "Give either 'radii' or 'radius' in " << td.name()
+            << ", not both" << exit(FatalIOError);
+    }
+    if (td.found("radii"))
+    {
+        for (const scalar r : td.get<scalarList>("radii")) radii.push_back(r);
+    }
+    else if (td.found("radius"))
+    {
+        radii.push_back(td.get<scalar>("radius"));
+    }
+    try
+    {
+        tool.profile =
+            std::make_shared<form::rigidProfile>(points, radii);
+    }
+    catch (const form::inputError& e)
+    {
+        fatalInput(td, e);
+    }
+
+    if (td.found("force"))
+    {
+        if (td.found("motion"))
+        {
+            FatalIOErrorInFunction(td)
+                << "Tool '" << name << "' in " << td.name() << " has both"
+                << " 'motion' and 'force': a tool is either motion- or"
+                << " force-controlled" << exit(FatalIOError);
+        }
+        std::shared_ptr<Function1<scalar>> f
+        (
+            Function1<scalar>::New("force", td).ptr()
+        );
+        const vector dir = td.get<vector>("direction");
+        const scalar m = Foam::sqrt(sqr(dir.x()) + sqr(dir.y()));
+        if (m < SMALL || mag(dir.z()) > SMALL*max(m, 1))
+        {
+            FatalIOErrorInFunction(td)
+                << "Entry 'direction' of tool '" << name << "' in "
+                << td.name() << " must be a non-zero vector in the FE plane"
+                << " (x y 0), got " << dir << exit(FatalIOError);
+        }
+        tool.forceControlled = true;
+        tool.direction = Eigen::Vector2d(dir.x(), dir.y())/m;
+        tool.force = [f](double t) { return f->value(t); };
+    }
+    else if (td.found("motion"))
+    {
+        std::shared_ptr<Function1<vector>> d
+        (
+            Function1<vector>::New("motion", td).ptr()
+        );
+        tool.translation = [d](double t)
+        {
+            const vector v = d->value(t);
+            return Eigen::Vector2d(v.x(), v.y());
+        };
+    }
+    return tool;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+bool Foam::solidContact::declared(const Time& runTime)
+{
+    return isFile(runTime.path()/"constant"/"contactProperties");
+}
+
+
+Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
+:
+    runTime_(runTime),
+    solid_(solid),
+    dict_
+    (
+        IOobject
+        (
+            "contactProperties", runTime.constant(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    )
+{
+    checkKeywords
+    (
+        dict_,
+        {"tools", "pairs", "epsilonN", "epsilonT", "stiffness",
+         "maxStatusChanges"}
+    );
+    if (solid_.analysis() == form::analysisType::solid3D)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Contact in " << dict_.name() << " is available for 2D"
+            << " (plane strain, axisymmetric) regions only"
+            << exit(FatalIOError);
+    }
+
+    std::vector<form::rigidToolSpec> tools;
+    const dictionary& tdict = dict_.subDict("tools");
+    for (const entry& e : tdict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(tdict)
+                << "Tool '" << e.keyword() << "' in " << tdict.name()
+                << " must be a dictionary" << exit(FatalIOError);
+        }
+        toolNames_.append(e.keyword());
+        tools.push_back(readTool(e.keyword(), e.dict()));
+    }
+
+    std::vector<form::contactPairSpec> pairs;
+    const dictionary& pdict = dict_.subDict("pairs");
+    const auto& faceSets = solid_.feMesh().feMesh().faceSets;
+    for (const entry& e : pdict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(pdict)
+                << "Pair '" << e.keyword() << "' in " << pdict.name()
+                << " must be a dictionary { patch ...; tool ...; friction"
+                << " ...; }" << exit(FatalIOError);
+        }
+        const dictionary& pd = e.dict();
+        checkKeywords(pd, {"patch", "tool", "friction"});
+        form::contactPairSpec ps;
+        ps.name = e.keyword();
+        ps.faceSet = pd.get<word>("patch");
+        ps.tool = pd.get<word>("tool");
+        ps.friction = pd.getOrDefault<scalar>("friction", 0);
+        toolIndex(ps.tool, pd);
+        if (!faceSets.count(ps.faceSet)
+         || solid_.mesh().boundaryMesh().findPatchID(ps.faceSet) < 0)
+        {
+            FatalIOErrorInFunction(pd)
+                << "Unknown patch '" << ps.faceSet << "' of solid region '"
+                << solid_.name() << "' in " << pd.name() << nl
+                << "    Patches: " << solid_.mesh().boundaryMesh().names()
+                << exit(FatalIOError);
+        }
+        if (!(ps.friction >= 0))
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry 'friction' in " << pd.name() << " must be >= 0,"
+                << " got " << ps.friction << exit(FatalIOError);
+        }
+        pairs.push_back(ps);
+    }
+    if (pairs.empty())
+    {
+        FatalIOErrorInFunction(pdict)
+            << "No contact pairs in " << pdict.name() << exit(FatalIOError);
+    }
+
+    form::contactControls controls;
+    controls.epsilonN = dict_.getOrDefault<scalar>("epsilonN", 0);
+    controls.epsilonT = dict_.getOrDefault<scalar>("epsilonT", 0);
+    controls.stiffness = dict_.getOrDefault<scalar>("stiffness", 0);
+    controls.maxStatusChanges =
+        dict_.getOrDefault<label>("maxStatusChanges", 8);
+    if (controls.maxStatusChanges < 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'maxStatusChanges' in " << dict_.name()
+            << " must be >= 1" << exit(FatalIOError);
+    }
+
+    // Young's modulus of the contactor material from its elastic moduli
+    const form::material& mat = solid_.material();
+    const scalar K = mat.bulkModulus(), G = mat.shearModulus();
+    const scalar E = 9*K*G/(3*K + G);
+    try
+    {
+        model_ = std::make_shared<form::contactModel>
+        (
+            solid_.feMesh().feMesh(), solid_.analysis(), E, tools, pairs,
+            controls
+        );
+    }
+    catch (const form::inputError& e)
+    {
+        fatalInput(dict_, e);
+    }
+    solid_.model().setContact(model_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::string Foam::solidContact::describe() const
+{
+    return model_->describe();
+}
+
+
+void Foam::solidContact::releaseTools
+(
+    const wordList& tools,
+    const dictionary& dict,
+    scalar t0,
+    scalar t1
+)
+{
+    for (const word& t : tools)
+    {
+        toolIndex(t, dict);
+        if (model_->released(t)) continue;
+        solid_.model().releaseTool(t, t0, t1);
+    }
+}
+
+
+Foam::scalar Foam::solidContact::toolForce
+(
+    const word& tool,
+    label component,
+    const dictionary& dict
+) const
+{
+    toolIndex(tool, dict);
+    return model_->toolForce(tool)(component);
+}
+
+
+Foam::scalar Foam::solidContact::toolPosition
+(
+    const word& tool,
+    label component,
+    scalar t,
+    const dictionary& dict
+) const
+{
+    toolIndex(tool, dict);
+    return model_->toolTranslation(tool, t)(component);
+}
+
+
+void Foam::solidContact::write(const word& timeName, scalar t) const
+{
+    const fileName dir = runTime_.path()/"postProcessing"/"contact"/timeName;
+    mkDir(dir);
+    const form::vecX& U = solid_.model().U();
+    for (const form::contactPairSpec& ps : model_->pairs())
+    {
+        std::ofstream os(dir/(ps.name + ".dat"));
+        os.precision(10);
+        os  << "# pair " << ps.name << ": patch " << ps.faceSet << ", tool "
+            << ps.tool << ", time " << t << '\n'
+            << "# node X Y x y gap normalForce tangentialForce weight"
+               " pressure shear slip closed\n";
+        const form::feMesh& fe = solid_.feMesh().feMesh();
+        for (const auto& r : model_->pairResults(ps.name, U, t))
+        {
+            os  << r.node << ' ' << fe.X(r.node, 0) << ' ' << fe.X(r.node, 1)
+                << ' ' << r.x(0) << ' ' << r.x(1) << ' ' << r.gap << ' '
+                << r.normalForce << ' ' << r.tangentialForce << ' '
+                << r.weight << ' ' << r.pressure << ' ' << r.shear << ' '
+                << r.slip << ' ' << (r.closed ? 1 : 0) << '\n';
+        }
+    }
+    std::ofstream os(dir/"tools.dat");
+    os.precision(10);
+    os << "# tool x y (current outline)\n";
+    for (const form::rigidToolSpec& tool : model_->tools())
+    {
+        const Eigen::Vector2d d = model_->toolTranslation(tool.name, t);
+        const double ds = tool.profile->length()/2000;
+        for (const Eigen::Vector2d& p : tool.profile->sample(ds))
+        {
+            os << tool.name << ' ' << p(0) + d(0) << ' ' << p(1) + d(1)
+               << '\n';
+        }
+        os << "\n\n";
+    }
+}
+
+
+void Foam::solidContact::reportUntouched() const
+{
+    for (const form::rigidToolSpec& tool : model_->tools())
+    {
+        if (!model_->touched(tool.name))
+        {
+            WarningInFunction
+                << "Tool '" << tool.name << "' of " << dict_.name()
+                << " never touched the body: check its profile, its motion"
+                << " and the patches of its pairs" << endl;
+        }
+    }
+}
+
+
+// ************************************************************************* //
