@@ -35,6 +35,7 @@ struct contactModel::impl
     double k = 1;
     double epsN = 0;
     double epsT = 0;
+    double spacing = 1;
     int nDofs = 0;
 
     struct pairData
@@ -46,6 +47,8 @@ struct contactModel::impl
         int first = 0;          //!< index of the first unknown
         int perNode = 1;        //!< 1 (frictionless) or 2
         std::vector<double> xiCommitted;
+        //- Slip of the last committed step (output)
+        std::vector<double> lastSlip;
         std::vector<int> status;   //!< 1 closed, 0 open, -1 unknown
         std::vector<int> flips;
         bool active = true;
@@ -237,6 +240,7 @@ contactModel::contactModel
         p.first = nUnknowns;
         nUnknowns += p.perNode*int(p.nodes.size());
         p.xiCommitted.assign(p.nodes.size(), 0);
+        p.lastSlip.assign(p.nodes.size(), 0);
         p.status.assign(p.nodes.size(), -1);
         p.flips.assign(p.nodes.size(), 0);
         m.pairs.push_back(std::move(p));
@@ -250,6 +254,7 @@ contactModel::contactModel
     m.toolForce.assign(m.tools.size(), Eigen::Vector2d::Zero());
 
     const double spacing = nSpacings ? lengthSum/nSpacings : 1.0;
+    m.spacing = spacing;
     double depth = 1;
     if (analysis == analysisType::axisymmetric)
     {
@@ -428,7 +433,14 @@ void contactModel::evaluate
             m.toolForce[T] += f;
             r(il) = k*c.w;
 
-            const int closed = lambda > P.gap ? 1 : 0;
+            // Status with a dead band: a node whose gap and multiplier
+            // are both at round-off level (touching without force, e.g.
+            // a flat sheet under a flat punch) keeps its status, so only
+            // real open/closed changes count as chattering
+            const double band = std::max(std::sqrt(m.epsN), 1e-9*m.spacing);
+            int closed = p.status[a] < 0 ? (lambda > P.gap ? 1 : 0) : p.status[a];
+            if (lambda - P.gap > band) closed = 1;
+            else if (P.gap - lambda > band) closed = 0;
             m.nClosed += closed;
             if (closed) p.touched = true;
             if (p.status[a] >= 0 && p.status[a] != closed && K)
@@ -531,7 +543,17 @@ void contactModel::commit(const vecX& U)
     impl& m = *impl_;
     m.xCommitted = m.x;
     m.tCommitted = m.tEvaluated;
+    std::vector<std::vector<double>> xiOld;
+    for (const auto& p : m.pairs) xiOld.push_back(p.xiCommitted);
     m.initialiseXi(U, m.tCommitted);
+    for (std::size_t i = 0; i < m.pairs.size(); ++i)
+    {
+        auto& p = m.pairs[i];
+        for (std::size_t a = 0; a < p.nodes.size(); ++a)
+        {
+            p.lastSlip[a] = p.xiCommitted[a] - xiOld[i][a];
+        }
+    }
 }
 
 
@@ -658,7 +680,11 @@ std::vector<contactNodeResult> contactModel::pairResults
         res.weight = weight[res.node];
         res.pressure = res.weight > 0 ? res.normalForce/res.weight : 0;
         res.shear = res.weight > 0 ? res.tangentialForce/res.weight : 0;
-        res.slip = P.xi - p.xiCommitted[a];
+        // Slip over the last step: after a commit (output time) that is
+        // the committed step's; during a step, the slip so far
+        res.slip =
+            std::abs(P.xi - p.xiCommitted[a]) > 0
+          ? P.xi - p.xiCommitted[a] : p.lastSlip[a];
         res.closed = lambda > P.gap;
         results.push_back(res);
     }

@@ -1,0 +1,269 @@
+#!/usr/bin/env bash
+# Contact with rigid tools (constraint-function method, constant/
+# contactProperties), linear elastic bodies (E = 200000, nu = 0.3; the
+# linearElastic material is geometrically linear, linearElastic.H), plane
+# strain, forces per unit depth. Contact results are read from
+# postProcessing/contact/<time>/<pair>.dat (consistent nodal forces;
+# pressure = normalForce / weight, the weight int N_a ds taken on the
+# CURRENT surface).
+#
+# 1. Flat frictionless punch wider than the block (tests/cases/flatPunch:
+#    block 10 x 5, x fixed on the left (symmetry), rollers at the bottom,
+#    punch displaced down by 0.01; x-graded mesh, so the contactor nodes
+#    carry unequal consistent weights). Exact solution of the FE problem:
+#    the homogeneous plane-strain uniaxial-stress state sigma_xx = 0,
+#    eps_zz = 0 (Hooke's law, e.g. Timoshenko & Goodier, Theory of
+#    Elasticity, 3rd ed. 1970, sec. 16):
+#        sigma_yy = E/(1 - nu^2) eps_yy,   eps_yy = -0.01/5,
+#        eps_xx = -nu/(1 - nu) eps_yy      (free lateral expansion)
+#    With linear kinematics sigma_yy is per reference area, so the total
+#    force is exactly F = E/(1 - nu^2) 0.01/5 x 10 (= toolForce = sum of
+#    the nodal normal forces = bottom reaction), while the pressure
+#    (force / current width) is uniform and equals
+#        p = E/(1 - nu^2) (0.01/5) / (1 + nu/(1 - nu) 0.01/5)
+#    (every node equal to the mean within 1e-6, the mean within 1e-6).
+#    The case sets epsilonN = 1e-16: the regularised normal law leaves each
+#    closed node at a gap g = epsilonN/lambda (lambda = f/E, f the nodal
+#    force), which differs between corner and mid-side nodes (consistent
+#    forces 1:4:1); with the automatic epsilonN (1e-5 of the node spacing,
+#    squared) these gaps are up to 1.6e-7 and the pressures differ by up
+#    to 1.2e-4 of the mean; with 1e-16 the gaps are ~1e-13.
+# 2. Hertz line contact (tests/cases/hertz): rigid cylinder R = 50 (an
+#    exact circular fillet of a V outline) on a 25 x 25 half model (> 20 a)
+#    (symmetry x = 0, bottom fixed; 0.1-wide elements under the contact),
+#    motion-controlled indentation 0.04. From the total force per unit
+#    depth P (2 x the half model's toolForce), Hertz plane strain
+#    (Johnson, Contact Mechanics, 1985, sec. 4.3, eqs. 4.43-4.45 with the
+#    second body rigid):
+#        E* = E/(1 - nu^2),  a = sqrt(4 P R/(pi E*)),  p0 = 2 P/(pi a)
+#    FE: p0 = the largest nodal pressure, a = the contact edge, located by
+#    the semi-ellipse p^2 = p0^2 (1 - x^2/a^2) through the last two closed
+#    nodes (p^2 linear in x^2; the edge so found lies between the last
+#    closed node and the first open one). Both within 5 %. The same with
+#    the cylinder force-controlled (starting 0.01 above the block, pushed
+#    down with the motion run's force): the same force (1e-6), the same
+#    contact half-width (1e-3) and a final translation of -(0.04 + 0.01)
+#    (1e-5; the two runs reach the same state).
+# 3. Block 2 x 1 on a fixed rigid flat ground, Coulomb friction mu = 0.3,
+#    dead traction 100 on the top: N = 200 (tests/cases/slidingBlock).
+#    Coulomb's law (e.g. Johnson 1985, sec. 7.1; Wriggers, Computational
+#    Contact Mechanics, 2nd ed. 2006, sec. 5.2): |F_t| <= mu N, and
+#    F_t = mu N = 60 when the whole contact slides. The smooth Coulomb
+#    function tau = -mu lambda s/sqrt(s^2 + epsT) (s: slip over a step)
+#    carries mu lambda (1 - O(epsT/s^2)); the case sets sqrt(epsT) = 1e-6,
+#    1/25 of the smallest push increment (factor 0.9992).
+#    (a) the left face pushed far (0.01) in x: friction force = mu N
+#        within 0.5 % (toolForce; also = the sum of the nodal tangential
+#        forces, 1e-8). In the last steps (steady
+#        sliding; push (0.01 - 0.001)/4 = 0.00225 per step) every bottom
+#        node slips by the push increment: the
+#        slip column (xi - xi_n over the step) must show it (1e-3).
+#    (b) pressed with the left face held, then the left face released and
+#        pulled by a traction T = 40 < mu N (T x height 1): sticking, the
+#        ground's friction force equals the applied force T (equilibrium,
+#        1e-6) and the bottom nodes hardly move during the pull: the
+#        regularised law lets a sticking node creep by sqrt(epsT) r/sqrt(1
+#        - r^2) per step (r = |shear|/(mu pressure) < 1; r <= 0.94 here),
+#        so the bound is 10 sqrt(epsT) per step over the 4 pull steps,
+#        i.e. 2e-5 of the block length (sliding would be macroscopic: the
+#        block has no other support in x).
+#    (c) the push of (a) in steps of 2.5e-5 through the transition: in the
+#        first step where the bottom-right node (whose x displacement is
+#        its slip: the ground is fixed) slips by more than half the push
+#        increment, i.e. moves with the pusher, the friction force is mu N
+#        within 2 %.
+. "$(dirname "$0")/testFunctions"
+here=$(cd "$(dirname "$0")" && pwd)
+pi=$(awk 'BEGIN { printf "%.15g", atan2(0, -1) }')
+
+# newCase <case dir under tests/cases>: a scratch copy -> prints its path
+newCase()
+{
+    local d
+    d=$(mktemp -d "${TMPDIR:-/tmp}/formFoamContact.XXXXXX")
+    cp -r "$here/$1/." "$d/"
+    echo "$d"
+}
+# run <case>: mesh + solve; non-zero exit on failure
+run() { (cd "$1" && blockMesh -region block > log.blockMesh 2>&1 && formFoam > log.formFoam 2>&1); }
+# summary <case> <entry>: full precision (foamDictionary -value prints 6 digits)
+summary() { awk -v e="$2" '$1 == e { sub(/;$/, "", $2); print $2 }' "$1/postProcessing/summary"; }
+# contactFile <case> <time> <pair>
+contactFile() { echo "$1/postProcessing/contact/$2/$3.dat"; }
+keepOrRemove() { [ -n "${KEEP:-}" ] && echo "    kept $*" || rm -rf "$@"; }
+reportFailure() { fail "$1 (see $2/log.formFoam)"; tail -15 "$2/log.formFoam" | sed 's/^/    | /'; }
+
+#------------------------------------------------------------------------------
+# 1. Flat punch
+c=$(newCase flatPunch)
+if run "$c"; then
+    f=$(contactFile "$c" 1 blockTop)
+    sRef=$(awk 'BEGIN { printf "%.12g", 200000/(1 - 0.3^2)*0.01/5 }')
+    pRef=$(awk -v s="$sRef" 'BEGIN { printf "%.12g", s/(1 + 0.3/(1 - 0.3)*0.01/5) }')
+    # columns: node X Y x y gap normalForce tangentialForce weight pressure shear slip closed
+    read -r n nClosed pMean dev sumFn < <(awk '!/^#/ && NF >= 13 {
+        ++n; p[n] = $10; s += $10; fn += $7; if ($13 == 1) ++c }
+        END { m = s/n; d = 0
+              for (i = 1; i <= n; ++i) { e = (p[i] - m)/m; if (e < 0) e = -e; if (e > d) d = e }
+              printf "%d %d %.12g %.3g %.12g\n", n, c, m, d, fn }' "$f")
+    echo "    flat punch: $n contactor nodes, $nClosed closed, mean pressure $pMean, max |p - mean|/mean $dev"
+    [ "$nClosed" = "$n" ] && [ "$n" -gt 0 ] && pass "flat punch: all $n top nodes closed" \
+        || fail "flat punch: $nClosed of $n top nodes closed"
+    checkBelow "flat punch: uniform pressure, max |p - mean|/mean" "$dev" 1e-6
+    checkClose "flat punch: mean pressure vs E/(1 - nu^2) 0.01/5 per current width" "$pMean" "$pRef" 1e-6
+    F=$(summary "$c" punchForce)
+    checkClose "flat punch: toolForce vs E/(1 - nu^2) 0.01/5 x 10" "$F" \
+        "$(awk -v s="$sRef" 'BEGIN { printf "%.12g", 10*s }')" 1e-8
+    checkClose "flat punch: sum of nodal normal forces vs toolForce" "$sumFn" "$F" 1e-8
+    checkClose "flat punch: bottom reaction vs toolForce" "$(summary "$c" bottomReaction)" "$F" 1e-8
+else
+    reportFailure "flat punch run" "$c"
+fi
+keepOrRemove "$c"
+
+#------------------------------------------------------------------------------
+# 2. Hertz line contact
+# hertzResult <case> <time>: prints "pmax aFE nClosed"
+hertzResult()
+{
+    awk '!/^#/ && NF >= 13 { x[NR] = $4; p[NR] = $10; cl[NR] = $13; k[++n] = NR }
+    END {
+        # sort the nodes by current x (insertion sort: ~70 nodes)
+        for (i = 2; i <= n; ++i) { j = i; while (j > 1 && x[k[j-1]] > x[k[j]]) { t = k[j]; k[j] = k[j-1]; k[j-1] = t; --j } }
+        pmax = 0; last = 0; nc = 0
+        for (i = 1; i <= n; ++i) {
+            if (p[k[i]] > pmax) pmax = p[k[i]]
+            if (cl[k[i]] == 1) { ++nc; last = i }
+        }
+        if (last < 2 || last == n) { print pmax, "nan", nc; exit }
+        x1 = x[k[last-1]]; p1 = p[k[last-1]]; x2 = x[k[last]]; p2 = p[k[last]]
+        # semi-ellipse through the last two closed nodes: p^2 linear in x^2
+        a2 = x2*x2 + p2*p2*(x2*x2 - x1*x1)/(p1*p1 - p2*p2)
+        printf "%.10g %.10g %d %.6g %.6g\n", pmax, sqrt(a2), nc, x2, x[k[last+1]]
+    }' "$(contactFile "$1" "$2" blockTop)"
+}
+# hertzRef <P full>: prints "a p0"
+hertzRef()
+{
+    awk -v P="$1" -v pi="$pi" 'BEGIN { Es = 200000/(1 - 0.3^2); R = 50
+        a = sqrt(4*P*R/(pi*Es)); printf "%.10g %.10g\n", a, 2*P/(pi*a) }'
+}
+# hertzChecks <label> <case>: checks; sets hP (full force) and hA (FE a)
+hertzChecks()
+{
+    local a p0 pmax nc xc xo
+    hP=$(awk -v h="$(summary "$2" halfForce)" 'BEGIN { printf "%.10g", 2*h }')
+    read -r a p0 < <(hertzRef "$hP")
+    read -r pmax hA nc xc xo < <(hertzResult "$2" 1)
+    echo "    Hertz ($1): P = $hP, a = $a, p0 = $p0; FE: p_max = $pmax, a = $hA" \
+         "($nc closed nodes, last closed x = $xc, first open x = $xo)"
+    checkClose "Hertz ($1): max pressure vs p0 = 2P/(pi a)" "$pmax" "$p0" 0.05
+    checkClose "Hertz ($1): contact half-width vs a = sqrt(4PR/(pi E*))" "$hA" "$a" 0.05
+}
+c=$(newCase hertz)
+indentation=0.04
+sed -i "s/(1 (0 -0.04 0))/(1 (0 -$indentation 0))/" "$c/constant/contactProperties"
+if run "$c"; then
+    hertzChecks "motion-controlled" "$c"
+    Pm=$hP; am=$hA
+    # force-controlled: the cylinder starts 0.01 above the block and is
+    # pushed down with the (half model's) force of the motion-controlled run
+    cf=$(newCase hertz)
+    Fh=$(summary "$c" halfForce)
+    cat > "$cf/constant/contactProperties" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; location "constant"; object contactProperties; }
+tools
+{
+    cylinder
+    {
+        // as the motion-controlled case, 0.01 higher
+        profile     ((-60 39.299321881345245) (0 -20.700678118654755) (60 39.299321881345245));
+        radii       (50);
+        force       table ((0 0) (1 $Fh));
+        direction   (0 -1 0);
+    }
+}
+pairs
+{
+    blockTop { patch top; tool cylinder; friction 0; }
+}
+DICT
+    if run "$cf"; then
+        hertzChecks "force-controlled" "$cf"
+        checkClose "Hertz: force-controlled force vs motion-controlled" "$hP" "$Pm" 1e-6
+        checkClose "Hertz: force-controlled contact half-width vs motion-controlled" "$hA" "$am" 1e-3
+        checkClose "Hertz: force-controlled translation vs -(indentation + gap 0.01)" \
+            "$(summary "$cf" toolY)" "$(awk -v d="$indentation" 'BEGIN { printf "%.10g", -(d + 0.01) }')" 1e-5
+    else
+        reportFailure "Hertz run (force-controlled)" "$cf"
+    fi
+    keepOrRemove "$cf"
+else
+    reportFailure "Hertz run (motion-controlled)" "$c"
+fi
+keepOrRemove "$c"
+
+#------------------------------------------------------------------------------
+# 3. Sliding block: (a) + (c) in one run (press; push 0.001 in 40 steps;
+#    push on to 0.01 in 4 steps)
+muN=60
+c=$(newCase slidingBlock)
+if run "$c"; then
+    Ft=$(summary "$c" frictionForce)
+    echo "    sliding: N = $(summary "$c" normalForce), friction force $Ft, slip of the bottom-right node $(summary "$c" slipRight)"
+    checkClose "sliding block: normal force vs applied 100 x 2" "$(summary "$c" normalForce)" 200 1e-8
+    checkClose "(a) sliding: friction force (toolForce) vs mu N" "$Ft" "$muN" 0.005
+    # the ground's outline runs in -x: tangentialForce > 0 points in -x
+    sumFt=$(awk '!/^#/ && NF >= 13 { s += $8 } END { printf "%.10g", s }' "$(contactFile "$c" 3 blockBottom)")
+    checkClose "(a) sliding: sum of nodal tangential forces vs toolForce" "$sumFt" "$Ft" 1e-8
+    read -r sMin sMax < <(awk '!/^#/ && NF >= 13 { s = $12 < 0 ? -$12 : $12; if (n++ == 0 || s < a) a = s; if (s > b) b = s }
+        END { printf "%.6g %.6g\n", a, b }' "$(contactFile "$c" 3 blockBottom)")
+    echo "    (a) |slip| over the last step (output column): min $sMin, max $sMax (push increment (0.01 - 0.001)/4 = 0.00225)"
+    checkClose "(a) sliding: output slip over the last step (smallest node) vs push increment" "$sMin" 0.00225 1e-3
+    # (c) history: # time frictionForce normalForce slipRight. Sliding
+    # starts at the first step in which the bottom-right node slips by more
+    # than half the push increment (2.5e-5 per step)
+    read -r tc Fc dsc Fb < <(awk '!/^#/ {
+        if ($1 > 1 && $1 <= 2 && $4 - prevS > 0.5*2.5e-5) { print $1, $2, $4 - prevS, prevF; found = 1; exit }
+        prevS = $4; prevF = $2 }
+        END { if (!found) print "none", "", "", "" }' "$c/postProcessing/history.dat")
+    echo "    (c) first step sliding: t = $tc (push $(awk -v t="$tc" 'BEGIN { printf "%.4g", (t - 1)*0.001 }')), slip in the step $dsc, friction $Fc (previous step $Fb)"
+    checkClose "(c) stick-slip transition: friction force in the first sliding step vs mu N" "$Fc" "$muN" 0.02
+else
+    reportFailure "sliding block run" "$c"
+fi
+keepOrRemove "$c"
+
+# (b) sticking: press, then release the left face and pull it with T = 40
+c=$(newCase slidingBlock)
+T=40
+cat > "$c/constant/processSchedule" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; location "constant"; object processSchedule; }
+steps
+{
+    press       { endTime 1; deltaT 0.5; }
+    pull
+    {
+        endTime     2;
+        deltaT      0.25;
+        release     { left (x); }
+        prescribe   { left { type traction; traction table ((1 (0 0 0)) (2 ($T 0 0))); } }
+    }
+}
+DICT
+sed -i 's/^endTime .*/endTime         2;/' "$c/system/controlDict"
+if run "$c"; then
+    Ft=$(summary "$c" frictionForce)
+    checkClose "(b) sticking: friction force vs applied T = $T" "$Ft" "$T" 1e-6
+    # slip during the pull: x movement of the bottom nodes between t = 1 and 2
+    slip=$(awk '!/^#/ && NF >= 13 { if (FNR == NR) x[$1] = $4; else { d = $4 - x[$1]; if (d < 0) d = -d; if (d > m) m = d } }
+        END { printf "%.3g", m }' "$(contactFile "$c" 1 blockBottom)" "$(contactFile "$c" 2 blockBottom)")
+    maxSlipStep=$(awk '!/^#/ && NF >= 13 { d = $12 < 0 ? -$12 : $12; if (d > m) m = d } END { printf "%.3g", m }' \
+        "$(contactFile "$c" 2 blockBottom)")
+    echo "    (b) max bottom-node movement during the pull $slip (block length 2), max |slip| column at t = 2: $maxSlipStep"
+    checkBelow "(b) sticking: max bottom-node movement / block length" \
+        "$(awk -v s="$slip" 'BEGIN { printf "%.3g", s/2 }')" 2e-5
+else
+    reportFailure "sticking block run" "$c"
+fi
+keepOrRemove "$c"
