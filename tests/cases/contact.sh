@@ -49,9 +49,10 @@
 #    Coulomb's law (e.g. Johnson 1985, sec. 7.1; Wriggers, Computational
 #    Contact Mechanics, 2nd ed. 2006, sec. 5.2): |F_t| <= mu N, and
 #    F_t = mu N = 60 when the whole contact slides. The smooth Coulomb
-#    function tau = -mu lambda s/sqrt(s^2 + epsT) (s: slip over a step)
-#    carries mu lambda (1 - O(epsT/s^2)); the case sets sqrt(epsT) = 1e-6,
-#    1/25 of the smallest push increment (factor 0.9992).
+#    function tau = -mu lambda s/sqrt(s^2 + epsT) (s: sliding velocity,
+#    slip over a step / deltaT) carries mu lambda (1 - O(epsT/s^2)); the
+#    case sets sqrt(epsT) = 1e-6 per unit time, 1/1000 of the slowest push
+#    (2.5e-5 per step of 0.025).
 #    (a) the left face pushed far (0.01) in x: friction force = mu N
 #        within 0.5 % (toolForce; also = the sum of the nodal tangential
 #        forces, 1e-8). In the last steps (steady
@@ -204,6 +205,44 @@ fi
 keepOrRemove "$c"
 
 #------------------------------------------------------------------------------
+# 4. Bad contact input stops with a message naming the file and the entry
+#    (flat punch case)
+bad=$(newCase flatPunch)
+(cd "$bad" && blockMesh -region block > log.blockMesh 2>&1) || fail "blockMesh (bad input)"
+cp=constant/contactProperties
+# tryContact <label> <regex> <command to break the copy...>
+tryContact()
+{
+    local label=$1 regex=$2; shift 2
+    local d
+    d=$(newCase flatPunch)
+    cp -r "$bad/." "$d/"
+    (cd "$d" && eval "$@")
+    (cd "$d" && timeout 120 formFoam > log.formFoam 2>&1)
+    expectFailure "contact input: $label" $? "$d/log.formFoam" "$regex"
+    rm -rf "$d"
+}
+tryContact "mistyped pair entry" "Unknown entry 'frction'.*blockTop" \
+    "sed -i 's/friction 0;/frction 0;/' $cp"
+tryContact "unknown tool" "Unknown tool 'punsh'.*contactProperties" \
+    "sed -i 's/tool punch;/tool punsh;/' $cp"
+tryContact "unknown patch" "Unknown patch 'topp'.*contactProperties" \
+    "sed -i 's/patch top;/patch topp;/' $cp"
+tryContact "negative friction" "'friction'.*must be >= 0" \
+    "sed -i 's/friction 0;/friction -0.1;/' $cp"
+tryContact "negative fillet radius" "Entry 'radii'.*contactProperties" \
+    "sed -i 's/^        motion /        radii (0 -1);\n        motion /' $cp"
+tryContact "fillet that does not fit" "Entry 'radii'.*contactProperties" \
+    "sed -i 's/^        motion /        radii (0 50);\n        motion /' $cp"
+tryContact "force-controlled tool moving away from the body" "tool 'punch'.*never touch" \
+    "sed -i 's|^        motion .*|        force constant 100; direction (0 1 0);|' $cp"
+tryContact "motion and force on one tool" "both 'motion' and 'force'" \
+    "sed -i 's|^        motion \(.*\)|        motion \1 force constant 1; direction (0 -1 0);|' $cp"
+tryContact "SPD solver with contact" "cholmod.*contact" \
+    "sed -i 's/^linearSolver .*/linearSolver cholmod;/' system/solidSolution"
+rm -rf "$bad"
+
+#------------------------------------------------------------------------------
 # 3. Sliding block: (a) + (c) in one run (press; push 0.001 in 40 steps;
 #    push on to 0.01 in 4 steps)
 muN=60
@@ -229,6 +268,26 @@ if run "$c"; then
         END { if (!found) print "none", "", "", "" }' "$c/postProcessing/history.dat")
     echo "    (c) first step sliding: t = $tc (push $(awk -v t="$tc" 'BEGIN { printf "%.4g", (t - 1)*0.001 }')), slip in the step $dsc, friction $Fc (previous step $Fb)"
     checkClose "(c) stick-slip transition: friction force in the first sliding step vs mu N" "$Fc" "$muN" 0.02
+    # Restart from the state written at t = 2 (contact multipliers and
+    # slip origins in 2/block/contactState): the sliding step continues
+    # as in the uninterrupted run
+    r=$(newCase slidingBlock)
+    cp -r "$c/." "$r/"
+    rm -rf "$r/3" "$r/postProcessing"
+    sed -i 's/^startTime .*/startTime       2;/' "$r/system/controlDict"
+    if (cd "$r" && formFoam > log.restart 2>&1) \
+        && grep -q "Restarting from the state written at time 2" "$r/log.restart"
+    then
+        pass "restart with contact reads the state at t = 2"
+        checkClose "restart: friction force equals the continuous run" \
+            "$(summary "$r" frictionForce)" "$Ft" 1e-8
+        checkClose "restart: slip of the bottom-right node equals the continuous run" \
+            "$(summary "$r" slipRight)" "$(summary "$c" slipRight)" 1e-8
+    else
+        fail "restart run with contact (see $r/log.restart)"
+        tail -15 "$r/log.restart" | sed 's/^/    | /'
+    fi
+    keepOrRemove "$r"
 else
     reportFailure "sliding block run" "$c"
 fi

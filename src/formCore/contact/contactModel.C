@@ -383,6 +383,8 @@ void contactModel::evaluate
     impl& m = *impl_;
     const double k = m.k;
     const int N = m.nDofs;
+    const double dt =
+        std::max(t - m.tCommitted, 1e-12*std::max(1.0, std::abs(t)));
     r.setZero(nUnknowns());
     m.tEvaluated = t;
     m.nClosed = 0;
@@ -462,11 +464,17 @@ void contactModel::evaluate
             }
             if (K) p.status[a] = closed;
 
+            // Slip rate over the step (backward Euler velocity), so that
+            // the friction law does not depend on the step size
             frictionConstraint fc;
             if (p.perNode == 2)
             {
-                const double s = P.xi - p.xiCommitted[a];
-                fc = frictionConstraintFunction(s, tau, lambda, p.mu, m.epsT);
+                const double rate = (P.xi - p.xiCommitted[a])/dt;
+                fc = frictionConstraintFunction
+                (
+                    rate, tau, lambda, p.mu, m.epsT
+                );
+                fc.dvds /= dt;
                 r(it) = k*fc.v;
             }
             if (!K) continue;
@@ -693,6 +701,28 @@ std::vector<contactNodeResult> contactModel::pairResults
 
 
 int contactModel::nClosed() const { return impl_->nClosed; }
+
+
+std::string contactModel::unknownName(int j) const
+{
+    const impl& m = *impl_;
+    for (std::size_t T = 0; T < m.tools.size(); ++T)
+    {
+        if (m.toolUnknown[T] == j) return m.tools[T].name + " position";
+    }
+    for (std::size_t i = 0; i < m.pairs.size(); ++i)
+    {
+        const auto& p = m.pairs[i];
+        const int n = p.perNode*int(p.nodes.size());
+        if (j >= p.first && j < p.first + n)
+        {
+            const int a = (j - p.first)/p.perNode;
+            return m.pairSpecs[i].name + " node " + std::to_string(p.nodes[a])
+              + ((j - p.first) % p.perNode ? " friction" : " normal");
+        }
+    }
+    return "unknown " + std::to_string(j);
+}
 
 bool contactModel::touched(const std::string& tool) const
 {

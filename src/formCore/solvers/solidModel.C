@@ -875,10 +875,26 @@ void solidModel::beginIncrement(double t0, double t1)
 }
 
 
-std::string solidModel::iterationNote() const
+std::string solidModel::iterationNote(const vecX& residual) const
 {
-    if (!impl_->contact) return "";
-    return "  closed " + std::to_string(impl_->contact->nClosed());
+    const impl& m = *impl_;
+    if (!m.contact) return "";
+    std::string note = "  closed " + std::to_string(m.contact->nClosed());
+    if (residual.size() == 0) return note;
+    int i;
+    residual.cwiseAbs().maxCoeff(&i);
+    const int nFree = m.numbering.nFree();
+    if (i < nFree)
+    {
+        const int d = m.numbering.freeDofs[i];
+        note += "  max at node " + std::to_string(d/m.nDim)
+          + (d % m.nDim ? " y" : " x");
+    }
+    else
+    {
+        note += "  max at " + m.contact->unknownName(i - nFree);
+    }
+    return note;
 }
 const sparseMatrix& solidModel::Kfp() const { return impl_->Kfp; }
 

@@ -86,8 +86,8 @@ void staticSolver::checkSolver() const
         (
             "linearSolver",
             "linearSolver " + solver_.type() + " needs a symmetric positive"
-            " definite matrix, but follower loads make the tangent"
-            " unsymmetric; use umfpack"
+            " definite matrix, but follower loads or contact make the"
+            " Newton matrix unsymmetric; use umfpack"
         );
     }
 }
@@ -248,6 +248,43 @@ bool staticSolver::lineSearch
 }
 
 
+bool staticSolver::residualLineSearch
+(
+    double t,
+    const vecX& dU,
+    double r0,
+    bool ok,
+    vecX& r,
+    double& beta
+)
+{
+    beta = 1;
+    double rNorm = ok ? r.norm() : std::numeric_limits<double>::infinity();
+    if (ok && rNorm <= (1 - 1e-4)*r0) return true;
+    double bestBeta = ok ? 1.0 : 0.0;
+    double best = ok ? rNorm : std::numeric_limits<double>::infinity();
+    double current = 1;
+    for (int k = 0; k < newton_.maxLineSearchIterations; ++k)
+    {
+        const double b = 0.5*current;
+        model_.addToFree((b - current)*dU);
+        current = b;
+        if (!evaluate(t, r, false)) continue;
+        rNorm = r.norm();
+        if (rNorm < best)
+        {
+            best = rNorm;
+            bestBeta = b;
+        }
+        if (rNorm <= (1 - 1e-4*b)*r0) break;
+    }
+    if (bestBeta <= 0) return false;
+    model_.addToFree((bestBeta - current)*dU);
+    beta = bestBeta;
+    return evaluate(t, r, true);
+}
+
+
 bool staticSolver::solveIncrement(double t0, double t1, stepReport& report)
 {
     checkSolver();
@@ -351,7 +388,10 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
          && std::abs(dU.dot(rhs)) <= newton_.energyTolerance*energy1;
         if (newton_.lineSearch && !negligible)
         {
-            ok = lineSearch(t1, dU, rhs, ok, r, beta);
+            ok =
+                newton_.residualLineSearch
+              ? residualLineSearch(t1, dU, rhs.norm(), ok, r, beta)
+              : lineSearch(t1, dU, rhs, ok, r, beta);
         }
         if (!ok)
         {
@@ -393,7 +433,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             "  beta %.3g",
             i, rNorm, rRel, dUNorm, energyRatio, beta
         );
-        log_<< line << model_.iterationNote() << '\n';
+        log_<< line << model_.iterationNote(r) << '\n';
 
         if (!std::isfinite(rNorm))
         {

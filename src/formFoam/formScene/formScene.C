@@ -24,7 +24,7 @@ void Foam::formScene::readSolution()
         {
             "analysis", "linearSolver", "minDeltaT", "maxDeltaT",
             "maxCutbacks", "maxIterations", "forceTolerance",
-            "energyTolerance", "lineSearch", "growthFactor",
+            "energyTolerance", "lineSearch", "lineSearchType", "growthFactor",
             "growthIterations", "summary"
         }
     );
@@ -55,6 +55,14 @@ void Foam::formScene::readSolution()
     newton_.forceTolerance = d.getOrDefault<scalar>("forceTolerance", 1e-8);
     newton_.energyTolerance = d.getOrDefault<scalar>("energyTolerance", 1e-14);
     newton_.lineSearch = d.getOrDefault<bool>("lineSearch", true);
+    lineSearchType_ = d.getOrDefault<word>("lineSearchType", "auto");
+    if (!wordList{"auto", "energy", "residual"}.found(lineSearchType_))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'lineSearchType' in " << d.name() << ": unknown '"
+            << lineSearchType_ << "'; valid: auto energy residual"
+            << exit(FatalIOError);
+    }
 
     const auto positive = [&](const char* key, scalar v)
     {
@@ -89,7 +97,13 @@ void Foam::formScene::printScene() const
     {
         Info<< "    " << s.describe().c_str() << nl;
     }
-    Info<< "    analysis: static (no inertia)" << nl;
+    Info<< "    analysis: static (no inertia)" << nl
+        << "    line search: "
+        << (
+               !newton_.lineSearch ? "off"
+             : newton_.residualLineSearch ? "residual norm (backtracking)"
+             : "energy"
+           ) << nl;
     if (contact_)
     {
         Info<< "    contact (constraint functions):" << nl;
@@ -647,6 +661,11 @@ Foam::formScene::formScene(Time& runTime)
     {
         contact_.reset(new solidContact(runTime, solids_[0]));
     }
+    // auto: the energy line search suits potential problems; contact
+    // (saddle point, friction) needs the residual-norm backtracking
+    newton_.residualLineSearch =
+        lineSearchType_ == "residual"
+     || (lineSearchType_ == "auto" && contact_);
 
     // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching
     // to UMFPACK if a tangent turns out indefinite (autoSolver.H)
@@ -676,9 +695,10 @@ Foam::formScene::formScene(Time& runTime)
     {
         FatalIOErrorInFunction(solution_)
             << "Entry 'linearSolver' in " << solution_.name() << ": "
-            << solverName << " needs a symmetric matrix, but follower"
-            << " pressure loads make the tangent unsymmetric; use umfpack"
-            << " or auto" << exit(FatalIOError);
+            << solverName << " needs a symmetric positive definite matrix,"
+            << " but follower pressure loads or contact (a saddle point with"
+            << " friction terms) make the Newton matrix unsymmetric; use"
+            << " umfpack or auto" << exit(FatalIOError);
     }
 
     readSchedule();
@@ -802,6 +822,19 @@ void Foam::formScene::run()
                     {ps.name, clock.elapsedTime() - stepClockStart}
                 );
             }
+        }
+        catch (const form::inputError& err)
+        {
+            // Input that only shows as wrong once the run meets it (e.g.
+            // a force-controlled tool that can never touch the body)
+            solid.model().revert();
+            const fileName where =
+                contact_ && contact_->hasTool(err.entry())
+              ? runTime_.path()/"constant"/"contactProperties"
+              : fileName(runTime_.path()/"system"/"solidSolution");
+            FatalErrorInFunction
+                << "Entry '" << err.entry().c_str() << "' in " << where
+                << ": " << err.what() << exit(FatalError);
         }
         catch (const form::numericalError& err)
         {

@@ -187,7 +187,7 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
          || solid_.mesh().boundaryMesh().findPatchID(ps.faceSet) < 0)
         {
             FatalIOErrorInFunction(pd)
-                << "Unknown patch '" << ps.faceSet << "' of solid region '"
+                << "Unknown patch '" << ps.faceSet.c_str() << "' of solid region '"
                 << solid_.name() << "' in " << pd.name() << nl
                 << "    Patches: " << solid_.mesh().boundaryMesh().names()
                 << exit(FatalIOError);
