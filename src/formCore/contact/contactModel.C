@@ -263,9 +263,10 @@ contactModel::contactModel
     }
     m.k = controls.stiffness > 0 ? controls.stiffness : modulus*depth;
     m.epsN =
-        controls.epsilonN > 0 ? controls.epsilonN : std::pow(1e-5*spacing, 2);
-    m.epsT =
-        controls.epsilonT > 0 ? controls.epsilonT : std::pow(1e-4*spacing, 2);
+        controls.epsilonN > 0 ? controls.epsilonN : std::pow(1e-4*spacing, 2);
+    // epsT: set at the first increment from the tools' speed (automatic
+    // rule) unless given
+    m.epsT = controls.epsilonT > 0 ? controls.epsilonT : 0;
 
     m.x = vecX::Zero(nUnknowns);
     m.xCommitted = m.x;
@@ -347,6 +348,25 @@ void contactModel::beginIncrement(double t0, double t1, const vecX& U)
     {
         m.tCommitted = t0;
         m.initialiseXi(U, t0);
+    }
+    if (m.epsT <= 0)
+    {
+        // Automatic friction regularisation: the smooth transition of the
+        // Coulomb function covers sliding speeds below 1 % of the fastest
+        // prescribed tool speed (over the first increment); without moving
+        // tools, 1e-4 of the node spacing per unit time
+        double speed = 0;
+        for (const rigidToolSpec& tool : m.tools)
+        {
+            if (!tool.translation || !(t1 > t0)) continue;
+            speed = std::max
+            (
+                speed,
+                (tool.translation(t1) - tool.translation(t0)).norm()/(t1 - t0)
+            );
+        }
+        const double width = speed > 0 ? 1e-2*speed : 1e-4*m.spacing;
+        m.epsT = width*width;
     }
     for (impl::pairData& p : m.pairs)
     {
@@ -472,7 +492,8 @@ void contactModel::evaluate
                 const double rate = (P.xi - p.xiCommitted[a])/dt;
                 fc = frictionConstraintFunction
                 (
-                    rate, tau, lambda, p.mu, m.epsT
+                    rate, tau, lambda, p.mu,
+                    m.epsT > 0 ? m.epsT : std::pow(1e-4*m.spacing, 2)
                 );
                 fc.dvds /= dt;
                 r(it) = k*fc.v;
@@ -755,7 +776,8 @@ std::string contactModel::describe() const
     }
     s += "k " + formatNumber(m.k) + ", sqrt(epsN) "
       + formatNumber(std::sqrt(m.epsN)) + ", sqrt(epsT) "
-      + formatNumber(std::sqrt(m.epsT)) + ", unknowns "
+      + (m.epsT > 0 ? formatNumber(std::sqrt(m.epsT)) : "auto (1 % of tool speed)")
+      + ", unknowns "
       + std::to_string(m.x.size());
     return s;
 }
