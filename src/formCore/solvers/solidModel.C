@@ -875,6 +875,29 @@ void solidModel::beginIncrement(double t0, double t1)
 }
 
 
+vecX solidModel::state() const
+{
+    const impl& m = *impl_;
+    const int nC = m.contact ? m.contact->nUnknowns() : 0;
+    vecX s(m.nDofs() + nC);
+    s.head(m.nDofs()) = m.U;
+    if (nC) s.tail(nC) = m.contact->unknowns();
+    return s;
+}
+
+
+void solidModel::addToState(const vecX& d)
+{
+    impl& m = *impl_;
+    m.requireFinalised("addToState");
+    for (int dof : m.numbering.freeDofs) m.U(dof) += d(dof);
+    if (m.contact)
+    {
+        m.contact->addToUnknowns(d.tail(m.contact->nUnknowns()));
+    }
+}
+
+
 std::string solidModel::iterationNote(const vecX& residual) const
 {
     const impl& m = *impl_;

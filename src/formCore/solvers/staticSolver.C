@@ -319,9 +319,30 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     vecX r;
     model_.beginIncrement(t0, t1);
 
-    // Residual at the committed state with the loads of t1
+    // Extrapolating predictor: the last increment scaled to this step
+    bool predicted = false;
+    if
+    (
+        newton_.extrapolate && lastIncrement_.size() == model_.state().size()
+     && lastDeltaT_ > 0
+    )
+    {
+        model_.addToState(((t1 - t0)/lastDeltaT_)*lastIncrement_);
+        predicted = true;
+    }
+
+    // Residual at the committed (or predicted) state with the loads of t1
     const vecX dUp = model_.prescribedIncrement(t1);
-    if (!evaluate(t1, r, nFree > 0))
+    bool ok0 = evaluate(t1, r, nFree > 0);
+    if (!ok0 && predicted)
+    {
+        log_<< "    extrapolated state not admissible: predictor dropped\n";
+        model_.revert();
+        model_.beginIncrement(t0, t1);
+        predicted = false;
+        ok0 = evaluate(t1, r, nFree > 0);
+    }
+    if (!ok0)
     {
         throw stepFailure
         (
@@ -361,6 +382,20 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         0, r0, dUp.norm()
     );
     log_<< line;
+
+    // The predicted state may already be in equilibrium (a linear
+    // response, or a steady stretch of a forming process)
+    if (predicted && nFree > 0)
+    {
+        const double level =
+            std::max(model_.externalForceNorm(), model_.reactionNorm());
+        if (level > 0 && r0 <= newton_.forceTolerance*level)
+        {
+            log_<< "    equilibrium at the predicted state\n";
+            report.iterations = 0;
+            return true;
+        }
+    }
 
     if (nFree == 0)
     {
@@ -439,11 +474,14 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         {
             throw stepFailure("non-finite residual");
         }
+        // After an extrapolated prediction the first update may be small
+        // already, so the energy ratio (relative to it) is no measure: the
+        // force criterion decides
         const bool converged =
             rNorm <= newton_.absoluteForceTolerance
          || (
                 rNorm <= newton_.forceTolerance*ref
-             && energyRatio <= newton_.energyTolerance
+             && (predicted || energyRatio <= newton_.energyTolerance)
             );
         // Round-off floor: the energy criterion holds, the residual no
         // longer decreases and is small. Nearly incompressible materials
@@ -521,9 +559,15 @@ void staticSolver::run
             stepReport report;
             report.step = step;
             report.cutbacks = cutbacks;
+            const vecX before = newton_.extrapolate ? model_.state() : vecX();
             if (solveIncrement(t, t1, report))
             {
                 model_.commit();
+                if (newton_.extrapolate)
+                {
+                    lastIncrement_ = model_.state() - before;
+                    lastDeltaT_ = t1 - t;
+                }
                 totalIterations_ += report.iterations;
                 std::snprintf
                 (

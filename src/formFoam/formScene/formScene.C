@@ -24,7 +24,8 @@ void Foam::formScene::readSolution()
         {
             "analysis", "linearSolver", "minDeltaT", "maxDeltaT",
             "maxCutbacks", "maxIterations", "forceTolerance",
-            "energyTolerance", "lineSearch", "lineSearchType", "growthFactor",
+            "energyTolerance", "lineSearch", "lineSearchType", "predictor",
+            "growthFactor",
             "growthIterations", "summary"
         }
     );
@@ -55,6 +56,14 @@ void Foam::formScene::readSolution()
     newton_.forceTolerance = d.getOrDefault<scalar>("forceTolerance", 1e-8);
     newton_.energyTolerance = d.getOrDefault<scalar>("energyTolerance", 1e-14);
     newton_.lineSearch = d.getOrDefault<bool>("lineSearch", true);
+    predictor_ = d.getOrDefault<word>("predictor", "auto");
+    if (!wordList{"auto", "none", "extrapolate"}.found(predictor_))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'predictor' in " << d.name() << ": unknown '"
+            << predictor_ << "'; valid: auto none extrapolate"
+            << exit(FatalIOError);
+    }
     lineSearchType_ = d.getOrDefault<word>("lineSearchType", "auto");
     if (!wordList{"auto", "energy", "residual"}.found(lineSearchType_))
     {
@@ -103,7 +112,10 @@ void Foam::formScene::printScene() const
                !newton_.lineSearch ? "off"
              : newton_.residualLineSearch ? "residual norm (backtracking)"
              : "energy"
-           ) << nl;
+           ) << nl
+        << "    predictor: "
+        << (newton_.extrapolate ? "extrapolated last increment" : "last state")
+        << nl;
     if (contact_)
     {
         Info<< "    contact (constraint functions):" << nl;
@@ -666,6 +678,9 @@ Foam::formScene::formScene(Time& runTime)
     newton_.residualLineSearch =
         lineSearchType_ == "residual"
      || (lineSearchType_ == "auto" && contact_);
+    // auto: extrapolate the last increment when tools move over the body
+    newton_.extrapolate =
+        predictor_ == "extrapolate" || (predictor_ == "auto" && contact_);
 
     // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching
     // to UMFPACK if a tangent turns out indefinite (autoSolver.H)
