@@ -25,9 +25,9 @@
 #    The case sets epsilonN = 1e-16: the regularised normal law leaves each
 #    closed node at a gap g = epsilonN/lambda (lambda = f/E, f the nodal
 #    force), which differs between corner and mid-side nodes (consistent
-#    forces 1:4:1); with the automatic epsilonN (1e-4 of the node spacing,
-#    squared) these gaps are 4e-6..1.6e-5 and the pressures differ by up
-#    to 1.6 % of the mean (437.9..444.9); with 1e-16 the gaps are ~1e-13.
+#    forces 1:4:1); with the automatic epsilonN (1e-5 of the node spacing,
+#    squared) these gaps are up to 1.6e-7 and the pressures differ by up
+#    to 1.2e-4 of the mean; with 1e-16 the gaps are ~1e-13.
 # 2. Hertz line contact (tests/cases/hertz): rigid cylinder R = 50 (an
 #    exact circular fillet of a V outline) on a 25 x 25 half model (> 20 a)
 #    (symmetry x = 0, bottom fixed; 0.1-wide elements under the contact),

@@ -263,7 +263,7 @@ contactModel::contactModel
     }
     m.k = controls.stiffness > 0 ? controls.stiffness : modulus*depth;
     m.epsN =
-        controls.epsilonN > 0 ? controls.epsilonN : std::pow(1e-4*spacing, 2);
+        controls.epsilonN > 0 ? controls.epsilonN : std::pow(1e-5*spacing, 2);
     // epsT: set at the first increment from the tools' speed (automatic
     // rule) unless given
     m.epsT = controls.epsilonT > 0 ? controls.epsilonT : 0;

@@ -327,7 +327,26 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
      && lastDeltaT_ > 0
     )
     {
-        model_.addToState(((t1 - t0)/lastDeltaT_)*lastIncrement_);
+        const double h = t1 - t0;
+        if
+        (
+            newton_.quadratic && previousDeltaT_ > 0
+         && previousIncrement_.size() == lastIncrement_.size()
+        )
+        {
+            // Newton form through (t0 - h1 - h2, t0 - h1, t0): with the
+            // slopes d1 = dU1/h1, d0 = dU2/h2 (last, previous) the
+            // quadratic gives U(t0 + h) = U0 + h d1 + h (h + h1)
+            // (d1 - d0)/(h1 + h2)
+            const double h1 = lastDeltaT_, h2 = previousDeltaT_;
+            const vecX d1 = lastIncrement_/h1;
+            const vecX d0 = previousIncrement_/h2;
+            model_.addToState(h*d1 + (h*(h + h1)/(h1 + h2))*(d1 - d0));
+        }
+        else
+        {
+            model_.addToState((h/lastDeltaT_)*lastIncrement_);
+        }
         predicted = true;
     }
 
@@ -565,6 +584,8 @@ void staticSolver::run
                 model_.commit();
                 if (newton_.extrapolate)
                 {
+                    previousIncrement_ = lastIncrement_;
+                    previousDeltaT_ = lastDeltaT_;
                     lastIncrement_ = model_.state() - before;
                     lastDeltaT_ = t1 - t;
                 }

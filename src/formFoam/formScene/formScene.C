@@ -57,11 +57,11 @@ void Foam::formScene::readSolution()
     newton_.energyTolerance = d.getOrDefault<scalar>("energyTolerance", 1e-14);
     newton_.lineSearch = d.getOrDefault<bool>("lineSearch", true);
     predictor_ = d.getOrDefault<word>("predictor", "auto");
-    if (!wordList{"auto", "none", "extrapolate"}.found(predictor_))
+    if (!wordList{"auto", "none", "extrapolate", "quadratic"}.found(predictor_))
     {
         FatalIOErrorInFunction(d)
             << "Entry 'predictor' in " << d.name() << ": unknown '"
-            << predictor_ << "'; valid: auto none extrapolate"
+            << predictor_ << "'; valid: auto none extrapolate quadratic"
             << exit(FatalIOError);
     }
     lineSearchType_ = d.getOrDefault<word>("lineSearchType", "auto");
@@ -114,7 +114,11 @@ void Foam::formScene::printScene() const
              : "energy"
            ) << nl
         << "    predictor: "
-        << (newton_.extrapolate ? "extrapolated last increment" : "last state")
+        << (
+               newton_.quadratic ? "quadratic extrapolation"
+             : newton_.extrapolate ? "extrapolated last increment"
+             : "last state"
+           )
         << nl;
     if (contact_)
     {
@@ -680,7 +684,9 @@ Foam::formScene::formScene(Time& runTime)
      || (lineSearchType_ == "auto" && contact_);
     // auto: extrapolate the last increment when tools move over the body
     newton_.extrapolate =
-        predictor_ == "extrapolate" || (predictor_ == "auto" && contact_);
+        predictor_ == "extrapolate" || predictor_ == "quadratic"
+     || (predictor_ == "auto" && contact_);
+    newton_.quadratic = predictor_ == "quadratic";
 
     // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching
     // to UMFPACK if a tangent turns out indefinite (autoSolver.H)

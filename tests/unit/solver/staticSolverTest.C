@@ -194,6 +194,67 @@ TEST(staticSolver, ConsistentPredictorSolvesLinearProblemInOneUpdate)
 }
 
 
+TEST(staticSolver, ExtrapolatingPredictorFindsLinearEquilibriumAtOnce)
+{
+    // A linear bar pulled by a dead end load growing linearly in time: from
+    // the second step on, the extrapolated increment is the exact answer,
+    // so the step converges at the predicted state; the quadratic
+    // predictor does so from the third step on. The answers equal those
+    // without a predictor.
+    registerTestElements();
+    const auto solveWith = [](bool extrapolate, bool quadratic,
+                              std::vector<stepReport>& reports)
+    {
+        matX X(2, 2);
+        X << 0, 0, 1, 0;
+        feMesh mesh = trussMesh(X, {{0, 1}});
+        addLoadFaces(mesh, {0});
+        solidModel model
+        (
+            mesh, analysisType::planeStrain, {{"bar", barLaw(false, 100)}}
+        );
+        model.addConstraint({0}, 0);
+        model.addConstraint({0, 1}, 1);
+        model.addTraction("load", [](double t)
+        {
+            return Eigen::Vector2d(2*5*t, 0);
+        });
+        model.finalise();
+        auto solver = linearSolver::New("cholmod");
+        newtonControls nc;
+        nc.extrapolate = extrapolate;
+        nc.quadratic = quadratic;
+        stepControls sc;
+        sc.deltaT = 0.25;
+        sc.maxDeltaT = 0.25;
+        std::ostringstream log;
+        staticSolver s(model, *solver, nc, sc, log);
+        s.run([&](const stepReport& r) { reports.push_back(r); });
+        return model.U()(2);
+    };
+    std::vector<stepReport> plain, linear, quadratic;
+    const double u0 = solveWith(false, false, plain);
+    const double u1 = solveWith(true, false, linear);
+    const double u2 = solveWith(true, true, quadratic);
+    ASSERT_EQ(linear.size(), 4u);
+    ASSERT_EQ(quadratic.size(), 4u);
+    EXPECT_GE(plain[1].iterations, 1);
+    EXPECT_GE(linear[0].iterations, 1);
+    for (std::size_t k = 1; k < linear.size(); ++k)
+    {
+        EXPECT_EQ(linear[k].iterations, 0) << "step " << k;
+    }
+    for (std::size_t k = 2; k < quadratic.size(); ++k)
+    {
+        EXPECT_EQ(quadratic[k].iterations, 0) << "step " << k;
+    }
+    // End force 5, EA = 100: u = 0.05 (the end force is half of 2*5*1)
+    EXPECT_NEAR(u0, 0.05, 1e-12);
+    EXPECT_NEAR(u1, u0, 1e-12);
+    EXPECT_NEAR(u2, u0, 1e-12);
+}
+
+
 TEST(staticSolver, DivergingStepIsCutBackAndReachesTheSmallStepAnswer)
 {
     // S-shaped bar law: a plateau at N ~ Fs then cubic hardening. A single
