@@ -438,8 +438,19 @@ void contactModel::evaluate
         for (int a = 0; a < nNodes; ++a)
         {
             const int node = p.nodes[a];
-            const profileProjection P =
-                tool.profile->project(m.position(node, U) - d);
+            const Eigen::Vector2d y = m.position(node, U) - d;
+            // A diverging iterate: report it (the step is cut back)
+            // instead of projecting non-finite or absurd positions
+            if (!y.allFinite() || y.cwiseAbs().maxCoeff() > 1e30)
+            {
+                throw numericalError
+                (
+                    "contact: node " + std::to_string(node) + " of pair '"
+                  + m.pairSpecs[&p - m.pairs.data()].name
+                  + "' has a non-finite or diverged position"
+                );
+            }
+            const profileProjection P = tool.profile->project(y);
             const int il = p.first + p.perNode*a;
             const int it = il + 1;
             const double lambda = m.x(il);
