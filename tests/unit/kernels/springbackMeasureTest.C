@@ -289,6 +289,26 @@ TEST(springbackMeasure, nodeLikeSamplingAndNoise)
     EXPECT_GT(std::abs(r.rho), 1e5) << r.rho;
 }
 
+TEST(springbackMeasure, cornerMidSideZigZag)
+{
+    // A 9-node FE line whose mid-side nodes stand 0.01 mm off the line of
+    // the corner nodes (a wall pressed between punch and die in a slot of
+    // its own thickness), nodes 0.44 mm apart: the default curvature window
+    // of two node spacings cancels the zig-zag, so the wall is not taken
+    // for a bend (with a window of one spacing it was)
+    const channel c = uChannel(180 - 103.7, 97.5, 150, -2.5);
+    const auto s = stations(c.length(), 0.875, 0);
+    std::vector<vec2> p = sample(c, s);
+    for (std::size_t i = 1; i + 1 < p.size(); i += 2)
+    {
+        const vec2 t = (p[i + 1] - p[i - 1]).normalized();
+        p[i] += 0.01*vec2(-t(1), t(0));
+    }
+    const uChannelSpringback r = measureUChannel(p);
+    expectMeasures(r, 103.7, 97.5, 150, 0.05, 0.02);
+}
+
+
 TEST(springbackMeasure, coarseSampling)
 {
     // ~100 points in all: about 4 points per bend
