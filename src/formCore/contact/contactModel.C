@@ -40,7 +40,8 @@ struct contactModel::impl
 
     struct pairData
     {
-        int tool = 0;
+        int tool = 0;           //!< -1: deformable target
+        std::shared_ptr<deformableTarget> target;
         double mu = 0;
         std::vector<int> nodes;
         std::vector<std::vector<int>> faces;   //!< face node lists
@@ -63,6 +64,9 @@ struct contactModel::impl
 
     vecX x;
     vecX xCommitted;
+    //- Nodal displacements of the last converged state (slip of nodes
+    //  on deformable targets)
+    vecX Ucommitted;
     bool xiInitialised = false;
     double tEvaluated = 0;
     double tCommitted = 0;
@@ -101,6 +105,7 @@ struct contactModel::impl
     {
         for (pairData& p : pairs)
         {
+            if (p.target) continue;
             const Eigen::Vector2d d = translation(p.tool, t);
             for (std::size_t a = 0; a < p.nodes.size(); ++a)
             {
@@ -113,6 +118,29 @@ struct contactModel::impl
     }
 
     void approach(int T, double t1, const vecX& U);
+
+    //- Open/closed status of node a of pair p (dead band), counting the
+    //  changes within a step (chattering -> numericalError)
+    int updateStatus
+    (
+        pairData& p,
+        int a,
+        double lambda,
+        double gap,
+        const vecX& U,
+        bool tangent
+    );
+
+    //- Contact of pair p with its deformable target (evaluate)
+    void evaluateDeformable
+    (
+        pairData& p,
+        double dt,
+        const vecX& U,
+        vecX& fext,
+        vecX& r,
+        std::vector<triplet>* K
+    );
 };
 
 
@@ -185,7 +213,36 @@ contactModel::contactModel
     for (const contactPairSpec& ps : m.pairSpecs)
     {
         impl::pairData p;
-        p.tool = m.findTool(ps.tool);
+        if (ps.tool.empty() == ps.targetFaceSet.empty())
+        {
+            throw inputError
+            (
+                ps.name,
+                "pair '" + ps.name + "': give either a tool or a target"
+                " patch"
+            );
+        }
+        if (ps.tool.empty())
+        {
+            p.tool = -1;
+            auto tt = mesh.faceSets.find(ps.targetFaceSet);
+            if (tt == mesh.faceSets.end() || tt->second.empty())
+            {
+                std::string valid;
+                for (const auto& s : mesh.faceSets) valid += " " + s.first;
+                throw inputError
+                (
+                    ps.name + "/targetPatch",
+                    "pair '" + ps.name + "': unknown or empty target patch '"
+                  + ps.targetFaceSet + "'; valid:" + valid
+                );
+            }
+            p.target = std::make_shared<deformableTarget>(mesh, tt->second);
+        }
+        else
+        {
+            p.tool = m.findTool(ps.tool);
+        }
         p.mu = ps.friction;
         if (!(p.mu >= 0))
         {
@@ -349,6 +406,9 @@ void contactModel::beginIncrement(double t0, double t1, const vecX& U)
         m.tCommitted = t0;
         m.initialiseXi(U, t0);
     }
+    // The committed state (also after a restart, where it is not
+    // committed through commit())
+    m.Ucommitted = U;
     if (m.epsT <= 0)
     {
         // Automatic friction regularisation: the smooth transition of the
@@ -391,6 +451,204 @@ void contactModel::beginIncrement(double t0, double t1, const vecX& U)
 }
 
 
+int contactModel::impl::updateStatus
+(
+    pairData& p,
+    int a,
+    double lambda,
+    double gap,
+    const vecX& U,
+    bool tangent
+)
+{
+    // Status with a dead band: a node whose gap and multiplier are both
+    // at round-off level (touching without force, e.g. a flat sheet under
+    // a flat punch) keeps its status, so only real open/closed changes
+    // count as chattering
+    const int node = p.nodes[a];
+    const double band = std::max(std::sqrt(epsN), 1e-9*spacing);
+    int closed = p.status[a] < 0 ? (lambda > gap ? 1 : 0) : p.status[a];
+    if (lambda - gap > band) closed = 1;
+    else if (gap - lambda > band) closed = 0;
+    nClosed += closed;
+    if (closed) p.touched = true;
+    if (p.status[a] >= 0 && p.status[a] != closed && tangent)
+    {
+        if (++p.flips[a] > controls.maxStatusChanges)
+        {
+            throw numericalError
+            (
+                "contact status chattering: node " + std::to_string(node)
+              + " at (" + formatNumber(position(node, U)(0)) + " "
+              + formatNumber(position(node, U)(1)) + ") of pair '"
+              + pairSpecs[&p - pairs.data()].name
+              + "' switched between open and closed "
+              + std::to_string(p.flips[a]) + " times in this step"
+                " (maxStatusChanges "
+              + std::to_string(controls.maxStatusChanges) + ")"
+            );
+        }
+    }
+    if (tangent) p.status[a] = closed;
+    return closed;
+}
+
+
+// Node-to-segment contact with the edges of a deformable body: the
+// equations of evaluate(), with the projection derivatives of
+// deformableTarget.H over q = (y, x_b): f = k (lambda n + tau t) on the
+// node, -N_b f on the edge nodes; dn = -t h/L, dt = n h/L, dN_b = N'_b
+// dzeta.
+void contactModel::impl::evaluateDeformable
+(
+    pairData& p,
+    double dt,
+    const vecX& U,
+    vecX& fext,
+    vecX& r,
+    std::vector<triplet>* K
+)
+{
+    const int N = nDofs;
+    const bool friction = p.perNode == 2;
+    const vecX& Un = Ucommitted.size() == U.size() ? Ucommitted : U;
+    const auto add = [K](int i, int j, double v)
+    {
+        K->emplace_back(i, j, v);
+    };
+
+    for (int a = 0; a < int(p.nodes.size()); ++a)
+    {
+        const int node = p.nodes[a];
+        const Eigen::Vector2d y = position(node, U);
+        if (!y.allFinite() || y.cwiseAbs().maxCoeff() > 1e30)
+        {
+            throw numericalError
+            (
+                "contact: node " + std::to_string(node) + " of pair '"
+              + pairSpecs[&p - pairs.data()].name
+              + "' has a non-finite or diverged position"
+            );
+        }
+        const int il = p.first + p.perNode*a;
+        const int it = il + 1;
+        const double lambda = x(il);
+        const double tau = friction ? x(it) : 0.0;
+        const segmentProjection P = p.target->project(y, node, U);
+        if (!P.onTarget)
+        {
+            // Beyond the target: out of contact, multipliers to zero
+            updateStatus(p, a, lambda, std::numeric_limits<double>::max(), U,
+                K != nullptr);
+            for (int j = 0; j < p.perNode; ++j)
+            {
+                r(il + j) = -k*x(il + j);
+                if (K) add(N + il + j, N + il + j, k);
+            }
+            continue;
+        }
+
+        const int m = int(P.nodes.size());
+        const int nq = 2 + 2*m;
+        std::vector<int> dof(nq);
+        dof[0] = 2*node;
+        dof[1] = 2*node + 1;
+        for (int b = 0; b < m; ++b)
+        {
+            dof[2 + 2*b] = 2*P.nodes[b];
+            dof[3 + 2*b] = 2*P.nodes[b] + 1;
+        }
+        const Eigen::Vector2d& n = P.normal;
+        const Eigen::Vector2d& tv = P.tangent;
+
+        const normalConstraint c =
+            normalConstraintFunction(P.gap, lambda, epsN);
+        const Eigen::Vector2d f = k*(lambda*n + tau*tv);
+        // Force on the node and the reaction on the edge, as a vector over q
+        Eigen::VectorXd F(nq);
+        F.head<2>() = f;
+        for (int b = 0; b < m; ++b) F.segment<2>(2 + 2*b) = -P.N(b)*f;
+        for (int i = 0; i < nq; ++i) fext(dof[i]) += F(i);
+        r(il) = k*c.w;
+        updateStatus(p, a, lambda, P.gap, U, K != nullptr);
+
+        // Slip rate: relative tangential velocity of the node and the
+        // target material point under it
+        frictionConstraint fc;
+        Eigen::VectorXd dSlip;
+        if (friction)
+        {
+            Eigen::Vector2d delta =
+                (U - Un).segment<2>(2*node);
+            Eigen::Vector2d dTarget = Eigen::Vector2d::Zero();
+            for (int b = 0; b < m; ++b)
+            {
+                const Eigen::Vector2d dxb = (U - Un).segment<2>(2*P.nodes[b]);
+                delta -= P.N(b)*dxb;
+                dTarget += P.dN(b)*dxb;
+            }
+            const double slip = tv.dot(delta);
+            fc = frictionConstraintFunction
+            (
+                slip/dt, tau, lambda, p.mu,
+                epsT > 0 ? epsT : std::pow(1e-4*spacing, 2)
+            );
+            fc.dvds /= dt;
+            r(it) = k*fc.v;
+            if (K)
+            {
+                dSlip = n.dot(delta)/P.length*P.h
+                      - tv.dot(dTarget)*P.dZeta;
+                dSlip.head<2>() += tv;
+                for (int b = 0; b < m; ++b)
+                {
+                    dSlip.segment<2>(2 + 2*b) -= P.N(b)*tv;
+                }
+            }
+        }
+        if (!K) continue;
+
+        // dF/dq: df/dq = k (-lambda t + tau n) h^T/L on every block,
+        // weighted by 1 (node) or -N_b (edge), plus -f dN_b/dq
+        const Eigen::Vector2d g = k*(-lambda*tv + tau*n)/P.length;
+        Eigen::MatrixXd dF(nq, nq);
+        dF.topRows<2>() = g*P.h.transpose();
+        for (int b = 0; b < m; ++b)
+        {
+            dF.middleRows<2>(2 + 2*b) =
+                -P.N(b)*g*P.h.transpose()
+              - P.dN(b)*f*P.dZeta.transpose();
+        }
+        // dF/dlambda = k n w, dF/dtau = k t w (w = 1 node, -N_b edge)
+        Eigen::VectorXd Fn(nq), Ft(nq);
+        Fn.head<2>() = k*n;
+        Ft.head<2>() = k*tv;
+        for (int b = 0; b < m; ++b)
+        {
+            Fn.segment<2>(2 + 2*b) = -P.N(b)*k*n;
+            Ft.segment<2>(2 + 2*b) = -P.N(b)*k*tv;
+        }
+        for (int i = 0; i < nq; ++i)
+        {
+            for (int j = 0; j < nq; ++j) add(dof[i], dof[j], -dF(i, j));
+            add(dof[i], N + il, -Fn(i));
+            add(N + il, dof[i], -k*c.dwdg*P.dGap(i));
+            if (friction)
+            {
+                add(dof[i], N + it, -Ft(i));
+                add(N + it, dof[i], -k*fc.dvds*dSlip(i));
+            }
+        }
+        add(N + il, N + il, -k*c.dwdl);
+        if (friction)
+        {
+            add(N + it, N + it, -k*fc.dvdtau);
+            add(N + it, N + il, -k*fc.dvdl);
+        }
+    }
+}
+
+
 void contactModel::evaluate
 (
     double t,
@@ -417,8 +675,12 @@ void contactModel::evaluate
 
     for (impl::pairData& p : m.pairs)
     {
+        if (p.target && p.active)
+        {
+            m.evaluateDeformable(p, dt, U, fext, r, K);
+            continue;
+        }
         const int T = p.tool;
-        const rigidToolSpec& tool = m.tools[T];
         const int nNodes = int(p.nodes.size());
         if (!p.active)
         {
@@ -431,6 +693,7 @@ void contactModel::evaluate
             }
             continue;
         }
+        const rigidToolSpec& tool = m.tools[T];
         const Eigen::Vector2d d = m.translation(T, t);
         const int iz = m.toolUnknown[T];
         const Eigen::Vector2d e = tool.direction;
@@ -466,34 +729,7 @@ void contactModel::evaluate
             m.toolForce[T] += f;
             r(il) = k*c.w;
 
-            // Status with a dead band: a node whose gap and multiplier
-            // are both at round-off level (touching without force, e.g.
-            // a flat sheet under a flat punch) keeps its status, so only
-            // real open/closed changes count as chattering
-            const double band = std::max(std::sqrt(m.epsN), 1e-9*m.spacing);
-            int closed = p.status[a] < 0 ? (lambda > P.gap ? 1 : 0) : p.status[a];
-            if (lambda - P.gap > band) closed = 1;
-            else if (P.gap - lambda > band) closed = 0;
-            m.nClosed += closed;
-            if (closed) p.touched = true;
-            if (p.status[a] >= 0 && p.status[a] != closed && K)
-            {
-                if (++p.flips[a] > m.controls.maxStatusChanges)
-                {
-                    throw numericalError
-                    (
-                        "contact status chattering: node " + std::to_string(node)
-                      + " at (" + formatNumber(m.position(node, U)(0)) + " "
-                      + formatNumber(m.position(node, U)(1)) + ") of pair '"
-                      + m.pairSpecs[&p - m.pairs.data()].name
-                      + "' switched between open and closed "
-                      + std::to_string(p.flips[a]) + " times in this step"
-                        " (maxStatusChanges "
-                      + std::to_string(m.controls.maxStatusChanges) + ")"
-                    );
-                }
-            }
-            if (K) p.status[a] = closed;
+            m.updateStatus(p, a, lambda, P.gap, U, K != nullptr);
 
             // Slip rate over the step (backward Euler velocity), so that
             // the friction law does not depend on the step size
@@ -592,8 +828,22 @@ void contactModel::commit(const vecX& U)
         for (std::size_t a = 0; a < p.nodes.size(); ++a)
         {
             p.lastSlip[a] = p.xiCommitted[a] - xiOld[i][a];
+            if (!p.target || m.Ucommitted.size() != U.size()) continue;
+            // Deformable target: relative tangential slip of the step
+            const segmentProjection P =
+                p.target->project(m.position(p.nodes[a], U), p.nodes[a], U);
+            if (!P.onTarget) { p.lastSlip[a] = 0; continue; }
+            Eigen::Vector2d delta =
+                (U - m.Ucommitted).segment<2>(2*p.nodes[a]);
+            for (std::size_t b = 0; b < P.nodes.size(); ++b)
+            {
+                delta -=
+                    P.N(b)*(U - m.Ucommitted).segment<2>(2*P.nodes[b]);
+            }
+            p.lastSlip[a] = P.tangent.dot(delta);
         }
     }
+    m.Ucommitted = U;
 }
 
 
@@ -703,23 +953,34 @@ std::vector<contactNodeResult> contactModel::pairResults
     }
 
     std::vector<contactNodeResult> results;
-    const Eigen::Vector2d d = m.translation(p.tool, t);
+    const Eigen::Vector2d d =
+        p.target ? Eigen::Vector2d::Zero() : m.translation(p.tool, t);
     for (std::size_t a = 0; a < p.nodes.size(); ++a)
     {
         contactNodeResult res;
         res.node = p.nodes[a];
         res.x = m.position(res.node, U);
-        const profileProjection P =
-            m.tools[p.tool].profile->project(res.x - d);
         const int il = p.first + p.perNode*int(a);
         const double lambda = p.active ? m.x(il) : 0.0;
         const double tau = p.active && p.perNode == 2 ? m.x(il + 1) : 0.0;
-        res.gap = P.gap;
         res.normalForce = m.k*lambda;
         res.tangentialForce = m.k*tau;
         res.weight = weight[res.node];
         res.pressure = res.weight > 0 ? res.normalForce/res.weight : 0;
         res.shear = res.weight > 0 ? res.tangentialForce/res.weight : 0;
+        if (p.target)
+        {
+            const segmentProjection P = p.target->project(res.x, res.node, U);
+            res.gap =
+                P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
+            res.slip = p.lastSlip[a];
+            res.closed = P.onTarget && lambda > P.gap;
+            results.push_back(res);
+            continue;
+        }
+        const profileProjection P =
+            m.tools[p.tool].profile->project(res.x - d);
+        res.gap = P.gap;
         // Slip over the last step: after a commit (output time) that is
         // the committed step's; during a step, the slip so far
         res.slip =
@@ -780,9 +1041,12 @@ std::string contactModel::describe() const
         const auto& p = m.pairs[i];
         const auto& ps = m.pairSpecs[i];
         s += "pair " + ps.name + ": patch " + ps.faceSet + " ("
-          + std::to_string(p.nodes.size()) + " nodes) against tool "
-          + ps.tool + (m.tools[p.tool].forceControlled
-              ? " (force-controlled)" : " (motion)")
+          + std::to_string(p.nodes.size()) + " nodes) against "
+          + (p.target
+              ? "patch " + ps.targetFaceSet + " ("
+              + std::to_string(p.target->nEdges()) + " edges, deformable)"
+              : "tool " + ps.tool + (m.tools[p.tool].forceControlled
+              ? " (force-controlled)" : " (motion)"))
           + ", friction " + formatNumber(p.mu) + "\n";
     }
     s += "k " + formatNumber(m.k) + ", sqrt(epsN) "
