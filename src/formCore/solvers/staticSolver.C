@@ -410,9 +410,22 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             std::max(model_.externalForceNorm(), model_.reactionNorm());
         if (level > 0 && r0 <= newton_.forceTolerance*level)
         {
-            log_<< "    equilibrium at the predicted state\n";
-            report.iterations = 0;
-            return true;
+            // r0 is linearised in the prescribed increment: evaluate at
+            // the state with it applied, which also gives the reactions
+            // of this state (they were those before the increment)
+            if (!evaluate(t1, r, true))
+            {
+                throw stepFailure("material update failed");
+            }
+            const double level1 =
+                std::max(model_.externalForceNorm(), model_.reactionNorm());
+            if (r.norm() <= newton_.forceTolerance*level1)
+            {
+                log_<< "    equilibrium at the predicted state\n";
+                report.iterations = 0;
+                return true;
+            }
+            rhs = r;
         }
     }
 

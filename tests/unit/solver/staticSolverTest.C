@@ -255,6 +255,46 @@ TEST(staticSolver, ExtrapolatingPredictorFindsLinearEquilibriumAtOnce)
 }
 
 
+TEST(staticSolver, ReactionsAtThePredictedEquilibriumIncludeThePrescribedIncrement)
+{
+    // Two linear bars (EA = 100, length 1 each) between a fixed node and
+    // a node pulled by a prescribed displacement 0.01 t: the force is
+    // 100 x 0.01 t / 2 = 0.5 t. From the second step on the extrapolating
+    // predictor is exact and the step ends at the predicted state; its
+    // reaction must be that of the state with the prescribed increment
+    // applied (a regression: it was the reaction before the increment)
+    registerTestElements();
+    matX X(3, 2);
+    X << 0, 0, 1, 0, 2, 0;
+    feMesh mesh = trussMesh(X, {{0, 1}, {1, 2}});
+    solidModel model
+    (
+        mesh, analysisType::planeStrain, {{"bar", barLaw(false, 100)}}
+    );
+    model.addConstraint({0}, 0);
+    model.addConstraint({0, 1, 2}, 1);
+    model.addConstraint({2}, 0, [](double t) { return 0.01*t; });
+    model.finalise();
+    auto solver = linearSolver::New("cholmod");
+    newtonControls nc;
+    nc.extrapolate = true;
+    stepControls sc;
+    sc.deltaT = 0.25;
+    sc.maxDeltaT = 0.25;
+    std::ostringstream log;
+    staticSolver s(model, *solver, nc, sc, log);
+    int atPrediction = 0;
+    s.run([&](const stepReport& r)
+    {
+        if (r.iterations == 0) ++atPrediction;
+        EXPECT_NEAR(model.reaction({2})(0), 0.5*r.time, 1e-12)
+            << "t = " << r.time << ", iterations " << r.iterations;
+        EXPECT_NEAR(model.reaction({0})(0), -0.5*r.time, 1e-12);
+    });
+    EXPECT_GE(atPrediction, 2) << log.str();
+}
+
+
 TEST(staticSolver, DivergingStepIsCutBackAndReachesTheSmallStepAnswer)
 {
     // S-shaped bar law: a plateau at N ~ Fs then cubic hardening. A single
