@@ -73,6 +73,29 @@
 #        its slip: the ground is fixed) slips by more than half the push
 #        increment, i.e. moves with the pusher, the friction force is mu N
 #        within 2 %.
+# 5. Elastic punch 10 x 2 on the elastic block 10 x 5 (tests/cases/
+#    flatPunchDeformable: two bodies of one region, the punch's bottom
+#    nodes against the block's top edges; punch top pushed down by 0.01,
+#    both left faces symmetric, block bottom on rollers, same material).
+#    Exact: both bodies in the homogeneous state of test 1 with
+#    eps_yy = -0.01/7, so the same lateral expansion, a frictionless
+#    interface and the uniform pressure
+#        p = E/(1 - nu^2) (0.01/7) / (1 + nu/(1 - nu) 0.01/7)
+#    and the force F = E/(1 - nu^2) 0.01/7 x 10 on both ends.
+#    (a) matching meshes (8 + 8 elements along x) and (b) a punch of 16
+#        (its nodes include all the block's): node-to-segment transmits
+#        the uniform pressure exactly (1e-6) and F (1e-8).
+#    (c) non-matching meshes (punch 5, 7, 11, 13 elements): single-pass
+#        node-to-segment does not pass the contact patch test (Taylor &
+#        Papadopoulos 1991; Wriggers, Computational Contact Mechanics,
+#        2006, sec. 9.3). The test prints the error pattern (nodal pressure
+#        range, force error) and checks: global equilibrium (punch
+#        reaction = bottom reaction, 1e-8), Newton in at most 6 iterations
+#        per step (a contactor node over a target corner node must not make
+#        Newton cycle between the two edges: deformableTarget.H,
+#        Hysteresis), and the recorded error levels as bounds (pressure
+#        within 35 % of p with a coarser punch (5, 7), 15 % with a finer
+#        one (11, 13); force within 2.5 % and 0.1 %).
 . "$(dirname "$0")/testFunctions"
 here=$(cd "$(dirname "$0")" && pwd)
 pi=$(awk 'BEGIN { printf "%.15g", atan2(0, -1) }')
@@ -238,6 +261,10 @@ tryContact "force-controlled tool moving away from the body" "tool 'punch'.*neve
     "sed -i 's|^        motion .*|        force constant 100; direction (0 1 0);|' $cp"
 tryContact "motion and force on one tool" "both 'motion' and 'force'" \
     "sed -i 's|^        motion \(.*\)|        motion \1 force constant 1; direction (0 -1 0);|' $cp"
+tryContact "pair with both a tool and a target patch" "needs either 'tool'.*'targetPatch'" \
+    "sed -i 's/tool punch;/tool punch; targetPatch bottom;/' $cp"
+tryContact "unknown target patch" "Unknown patch 'topp'.*entry 'targetPatch'" \
+    "sed -i 's/tool punch;/targetPatch topp;/' $cp"
 tryContact "SPD solver with contact" "cholmod.*contact" \
     "sed -i 's/^linearSolver .*/linearSolver cholmod;/' system/solidSolution"
 rm -rf "$bad"
@@ -326,3 +353,47 @@ else
     reportFailure "sticking block run" "$c"
 fi
 keepOrRemove "$c"
+
+#------------------------------------------------------------------------------
+# 5. Elastic punch on the elastic block (deformable target)
+sD=$(awk 'BEGIN { printf "%.12g", 200000/(1 - 0.3^2)*0.01/7 }')
+pD=$(awk -v s="$sD" 'BEGIN { printf "%.12g", s/(1 + 0.3/(1 - 0.3)*0.01/7) }')
+FD=$(awk -v s="$sD" 'BEGIN { printf "%.12g", 10*s }')
+# deformablePunch <nPunch> <pressure tolerance> <force tolerance> <label>
+deformablePunch()
+{
+    local np=$1 ptol=$2 ftol=$3 label=$4 c f n nClosed pMin pMax dev its steps
+    c=$(newCase flatPunchDeformable)
+    sed -i "s/^nPunch .*/nPunch  $np;/" "$c/system/block/blockMeshDict"
+    if run "$c"; then
+        f=$(contactFile "$c" 1 punchBlock)
+        read -r n nClosed pMin pMax dev < <(awk -v p="$pD" '!/^#/ && NF >= 13 {
+            ++n; if ($13 == 1) ++c; e = ($10 - p)/p; if (e < 0) e = -e; if (e > d) d = e
+            if (n == 1 || $10 < mn) mn = $10; if (n == 1 || $10 > mx) mx = $10 }
+            END { printf "%d %d %.6g %.6g %.3g\n", n, c, mn, mx, d }' "$f")
+        local F Fb
+        F=$(summary "$c" punchReaction)
+        Fb=$(summary "$c" bottomReaction)
+        its=$(summary "$c" newtonIterations)
+        steps=$(summary "$c" steps)
+        echo "    elastic punch, $label ($np punch / 8 block elements): $nClosed of $n contactor nodes closed," \
+             "nodal pressure $pMin .. $pMax (exact $pD, max error $dev), force $F (exact $FD)," \
+             "Newton $its iterations in $steps steps"
+        [ "$nClosed" = "$n" ] && pass "elastic punch ($label, $np): all $n contactor nodes closed" \
+            || fail "elastic punch ($label, $np): $nClosed of $n contactor nodes closed"
+        checkBelow "elastic punch ($label, $np): max |p - p_exact|/p_exact" "$dev" "$ptol"
+        checkClose "elastic punch ($label, $np): punch reaction vs E/(1 - nu^2) 0.01/7 x 10" "$F" "$FD" "$ftol"
+        checkClose "elastic punch ($label, $np): punch reaction vs bottom reaction (equilibrium)" "$F" "$Fb" 1e-8
+        checkBelow "elastic punch ($label, $np): Newton iterations per step" \
+            "$(awk -v i="$its" -v s="$steps" 'BEGIN { printf "%.3g", i/s }')" 6.01
+    else
+        reportFailure "elastic punch run ($label, $np)" "$c"
+    fi
+    keepOrRemove "$c"
+}
+deformablePunch 8 1e-6 1e-8 "matching"
+deformablePunch 16 1e-6 1e-8 "punch nodes include the block's"
+deformablePunch 5 0.35 0.025 "non-matching, coarser punch"
+deformablePunch 7 0.35 0.025 "non-matching, coarser punch"
+deformablePunch 11 0.15 0.001 "non-matching, finer punch"
+deformablePunch 13 0.15 0.001 "non-matching, finer punch"

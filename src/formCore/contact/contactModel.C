@@ -51,6 +51,8 @@ struct contactModel::impl
         //- Slip of the last committed step (output)
         std::vector<double> lastSlip;
         std::vector<int> status;   //!< 1 closed, 0 open, -1 unknown
+        //- Deformable target: each node's edge at the last iteration
+        std::vector<int> edge;
         std::vector<int> flips;
         bool active = true;
         bool touched = false;
@@ -299,6 +301,7 @@ contactModel::contactModel
         p.xiCommitted.assign(p.nodes.size(), 0);
         p.lastSlip.assign(p.nodes.size(), 0);
         p.status.assign(p.nodes.size(), -1);
+        p.edge.assign(p.nodes.size(), -1);
         p.flips.assign(p.nodes.size(), 0);
         m.pairs.push_back(std::move(p));
     }
@@ -534,7 +537,9 @@ void contactModel::impl::evaluateDeformable
         const int it = il + 1;
         const double lambda = x(il);
         const double tau = friction ? x(it) : 0.0;
-        const segmentProjection P = p.target->project(y, node, U);
+        const segmentProjection P =
+            p.target->project(y, node, U, p.edge[a]);
+        if (K) p.edge[a] = P.onTarget ? P.edge : -1;
         if (!P.onTarget)
         {
             // Beyond the target: out of contact, multipliers to zero
@@ -830,8 +835,10 @@ void contactModel::commit(const vecX& U)
             p.lastSlip[a] = p.xiCommitted[a] - xiOld[i][a];
             if (!p.target || m.Ucommitted.size() != U.size()) continue;
             // Deformable target: relative tangential slip of the step
-            const segmentProjection P =
-                p.target->project(m.position(p.nodes[a], U), p.nodes[a], U);
+            const segmentProjection P = p.target->project
+            (
+                m.position(p.nodes[a], U), p.nodes[a], U, p.edge[a]
+            );
             if (!P.onTarget) { p.lastSlip[a] = 0; continue; }
             Eigen::Vector2d delta =
                 (U - m.Ucommitted).segment<2>(2*p.nodes[a]);
@@ -970,7 +977,8 @@ std::vector<contactNodeResult> contactModel::pairResults
         res.shear = res.weight > 0 ? res.tangentialForce/res.weight : 0;
         if (p.target)
         {
-            const segmentProjection P = p.target->project(res.x, res.node, U);
+            const segmentProjection P =
+                p.target->project(res.x, res.node, U, p.edge[a]);
             res.gap =
                 P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
             res.slip = p.lastSlip[a];

@@ -184,9 +184,28 @@ segmentProjection deformableTarget::project
 (
     const Eigen::Vector2d& y,
     int node,
-    const Eigen::VectorXd& U
+    const Eigen::VectorXd& U,
+    int preferredEdge
 ) const
 {
+    // Hysteresis (deformableTarget.H): keep the edge of the last iteration
+    if (preferredEdge >= 0 && preferredEdge < nEdges())
+    {
+        const std::vector<int>& nodes = edges_[preferredEdge];
+        double zeta = 0;
+        if
+        (
+            std::find(nodes.begin(), nodes.end(), node) == nodes.end()
+         && closestZeta(preferredEdge, y, U, zeta)
+         && std::abs(zeta) <= 1.01
+        )
+        {
+            segmentProjection P;
+            evaluateAt(preferredEdge, zeta, y, U, P);
+            if (std::abs(P.gap) <= 0.1*P.length) return P;
+        }
+    }
+
     const double inf = std::numeric_limits<double>::infinity();
     double bestInside = inf;
     int edgeInside = -1;
@@ -261,8 +280,12 @@ segmentProjection deformableTarget::project
     {
         const int end = zetaOutside > 0 ? 1 : 0;
         // In the wedge of a kink between two target edges: the edge
-        // extrapolated a little; beyond a free end: off target
-        if (sharedEnd_[edgeOutside][end] && std::abs(zetaOutside) < 1.5)
+        // extrapolated a little; beyond a free end: off target, except
+        // within 1 % of the edge (a node level with the end, as at the
+        // ends of two bodies of equal width, stays in contact whatever
+        // the round-off)
+        const double reach = sharedEnd_[edgeOutside][end] ? 0.5 : 0.02;
+        if (std::abs(zetaOutside) < 1 + reach)
         {
             evaluateAt(edgeOutside, zetaOutside, y, U, P);
             return P;

@@ -149,8 +149,9 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
             << exit(FatalIOError);
     }
 
+    // Rigid tools (optional when every pair has a deformable target)
     std::vector<form::rigidToolSpec> tools;
-    const dictionary& tdict = dict_.subDict("tools");
+    const dictionary& tdict = dict_.subOrEmptyDict("tools");
     for (const entry& e : tdict)
     {
         if (!e.isDict())
@@ -176,21 +177,43 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
                 << " ...; }" << exit(FatalIOError);
         }
         const dictionary& pd = e.dict();
-        checkKeywords(pd, {"patch", "tool", "friction"});
+        checkKeywords(pd, {"patch", "tool", "targetPatch", "friction"});
         form::contactPairSpec ps;
         ps.name = e.keyword();
         ps.faceSet = pd.get<word>("patch");
-        ps.tool = pd.get<word>("tool");
         ps.friction = pd.getOrDefault<scalar>("friction", 0);
-        toolIndex(ps.tool, pd);
-        if (!faceSets.count(ps.faceSet)
-         || solid_.mesh().boundaryMesh().findPatchID(ps.faceSet) < 0)
+        if (pd.found("tool") == pd.found("targetPatch"))
         {
             FatalIOErrorInFunction(pd)
-                << "Unknown patch '" << ps.faceSet.c_str() << "' of solid region '"
-                << solid_.name() << "' in " << pd.name() << nl
-                << "    Patches: " << solid_.mesh().boundaryMesh().names()
-                << exit(FatalIOError);
+                << "Pair '" << e.keyword() << "' in " << pd.name()
+                << " needs either 'tool' (a rigid tool of 'tools') or"
+                << " 'targetPatch' (a patch of the solid region: contact"
+                << " with a deformable body)" << exit(FatalIOError);
+        }
+        if (pd.found("tool"))
+        {
+            ps.tool = pd.get<word>("tool");
+            toolIndex(ps.tool, pd);
+        }
+        else
+        {
+            ps.targetFaceSet = pd.get<word>("targetPatch");
+        }
+        for (const std::string& patch : {ps.faceSet, ps.targetFaceSet})
+        {
+            if (patch.empty()) continue;
+            if (!faceSets.count(patch)
+             || solid_.mesh().boundaryMesh().findPatchID(patch) < 0)
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Unknown patch '" << patch.c_str() << "' of solid"
+                    << " region '" << solid_.name() << "' in " << pd.name()
+                    << " (entry '"
+                    << (patch == ps.faceSet ? "patch" : "targetPatch")
+                    << "')" << nl
+                    << "    Patches: " << solid_.mesh().boundaryMesh().names()
+                    << exit(FatalIOError);
+            }
         }
         if (!(ps.friction >= 0))
         {
@@ -298,8 +321,10 @@ void Foam::solidContact::write(const word& timeName, scalar t) const
     {
         std::ofstream os(dir/(ps.name + ".dat"));
         os.precision(10);
-        os  << "# pair " << ps.name << ": patch " << ps.faceSet << ", tool "
-            << ps.tool << ", time " << t << '\n'
+        os  << "# pair " << ps.name << ": patch " << ps.faceSet
+            << (ps.tool.empty()
+                ? ", target patch " + ps.targetFaceSet : ", tool " + ps.tool)
+            << ", time " << t << '\n'
             << "# node X Y x y gap normalForce tangentialForce weight"
                " pressure shear slip closed\n";
         const form::feMesh& fe = solid_.feMesh().feMesh();
