@@ -96,6 +96,7 @@
 #        Hysteresis), and the recorded error levels as bounds (pressure
 #        within 35 % of p with a coarser punch (5, 7), 15 % with a finer
 #        one (11, 13); force within 2.5 % and 0.1 %).
+# 6. Restart inside a tool-release ramp (flat punch, see below).
 . "$(dirname "$0")/testFunctions"
 here=$(cd "$(dirname "$0")" && pwd)
 pi=$(awk 'BEGIN { printf "%.15g", atan2(0, -1) }')
@@ -351,6 +352,63 @@ if run "$c"; then
         "$(awk -v s="$slip" 'BEGIN { printf "%.3g", s/2 }')" 2e-5
 else
     reportFailure "sticking block run" "$c"
+fi
+keepOrRemove "$c"
+
+#------------------------------------------------------------------------------
+# 6. Restart inside a tool-release ramp (flat punch case): press (t 0 -> 1),
+#    then releaseTools (punch) over t 1 -> 2 in four steps: the punch's
+#    contact forces at t = 1 become loads that decay linearly to zero, so
+#    the elastic block's top goes from -0.01 to -0.01 (2 - t): -0.0025 at
+#    t = 1.75 and 0 at t = 2. A restart from t = 1.5 (inside the ramp:
+#    the released flag and the ramped loads must be rebuilt from the
+#    written state) must reproduce the continuous run (1e-8).
+releaseCase()
+{
+    local d
+    d=$(newCase flatPunch)
+    cat > "$d/constant/processSchedule" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; location "constant"; object processSchedule; }
+steps
+{
+    press   { endTime 1; deltaT 0.5; }
+    release { endTime 2; deltaT 0.25; releaseTools (punch); }
+}
+DICT
+    sed -i 's/^endTime .*/endTime         2;/; s/^writeInterval .*/writeInterval   0.25;/' \
+        "$d/system/controlDict"
+    sed -i 's|^    topDisplacement .*|    topDisplacement { type displacement; point (0 5 0); component y; }\
+    topMidRelease { type displacement; point (0 5 0); component y; time 1.75; }|' \
+        "$d/system/solidSolution"
+    echo "$d"
+}
+c=$(releaseCase)
+if run "$c"; then
+    uMid=$(summary "$c" topMidRelease)
+    uEnd=$(summary "$c" topDisplacement)
+    echo "    release ramp: top displacement $uMid at t = 1.75, $uEnd at t = 2"
+    checkClose "release ramp: top displacement at t = 1.75 vs -0.01 x 0.25" "$uMid" -0.0025 1e-6
+    checkBelow "release ramp: |top displacement| at t = 2 (fully released)" \
+        "$(awk -v u="$uEnd" 'BEGIN { printf "%.3g", u < 0 ? -u : u }')" 1e-9
+    r=$(newCase flatPunch)
+    cp -r "$c/." "$r/"
+    rm -rf "$r/1.75" "$r/2" "$r/postProcessing"
+    sed -i 's/^startTime .*/startTime       1.5;/' "$r/system/controlDict"
+    if (cd "$r" && formFoam > log.restart 2>&1) \
+        && grep -q "Restarting from the state written at time 1.5" "$r/log.restart"
+    then
+        pass "restart inside the release ramp reads the state at t = 1.5"
+        checkClose "restart inside the release ramp: top displacement at t = 1.75 vs continuous run" \
+            "$(summary "$r" topMidRelease)" "$uMid" 1e-8
+        checkBelow "restart inside the release ramp: |top displacement| at t = 2" \
+            "$(awk -v u="$(summary "$r" topDisplacement)" 'BEGIN { printf "%.3g", u < 0 ? -u : u }')" 1e-9
+    else
+        fail "restart inside the release ramp (see $r/log.restart)"
+        tail -15 "$r/log.restart" | sed 's/^/    | /'
+    fi
+    keepOrRemove "$r"
+else
+    reportFailure "release ramp run" "$c"
 fi
 keepOrRemove "$c"
 

@@ -667,6 +667,17 @@ void Foam::solidRegion::write()
         IOField<scalar> contactState(io("contactState"), scalarField(cs.size()));
         forAll(contactState, i) contactState[i] = cs[i];
         ok = contactState.write() && ok;
+        // Loads of released tools still ramping down (dof force t0 t1)
+        const std::vector<double> rl = model_->toolReleaseLoads();
+        if (!rl.empty())
+        {
+            IOField<scalar> toolRelease
+            (
+                io("feToolRelease"), scalarField(rl.size())
+            );
+            forAll(toolRelease, i) toolRelease[i] = rl[i];
+            ok = toolRelease.write() && ok;
+        }
     }
     ok = pointD.write() && ok;
     ok = D.write() && ok;
@@ -793,6 +804,30 @@ bool Foam::solidRegion::readState(const word& timeName)
                 << "Restart state " << c.objectPath() << ": " << e.what()
                 << " (was constant/contactProperties changed?)"
                 << exit(FatalError);
+        }
+        // Tool releases begun before the restart: the loads still ramping
+        // down (written only when a tool has been released)
+        IOobject rio
+        (
+            "feToolRelease", timeName, *mesh_,
+            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+        );
+        if (rio.typeHeaderOk<IOField<scalar>>(true))
+        {
+            IOField<scalar> rl(rio);
+            try
+            {
+                model_->setToolReleaseLoads
+                (
+                    std::vector<double>(rl.begin(), rl.end())
+                );
+            }
+            catch (const form::numericalError& e)
+            {
+                FatalErrorInFunction
+                    << "Restart state " << rl.objectPath() << ": "
+                    << e.what() << exit(FatalError);
+            }
         }
     }
     return true;
