@@ -212,6 +212,29 @@ contactModel::contactModel
     double radiusSum = 0;
     int nRadius = 0;
     int nUnknowns = 0;
+    // The faces of a pair's face set, or an inputError naming the entry
+    const auto faces = [&mesh]
+    (
+        const contactPairSpec& ps,
+        const std::string& name,
+        const std::string& entry,
+        const std::string& role
+    ) -> const std::vector<feFace>&
+    {
+        auto it = mesh.faceSets.find(name);
+        if (it == mesh.faceSets.end() || it->second.empty())
+        {
+            std::string valid;
+            for (const auto& s : mesh.faceSets) valid += " " + s.first;
+            throw inputError
+            (
+                ps.name + "/" + entry,
+                "pair '" + ps.name + "': unknown or empty " + role
+              + " patch '" + name + "'; valid:" + valid
+            );
+        }
+        return it->second;
+    };
     for (const contactPairSpec& ps : m.pairSpecs)
     {
         impl::pairData p;
@@ -227,19 +250,10 @@ contactModel::contactModel
         if (ps.tool.empty())
         {
             p.tool = -1;
-            auto tt = mesh.faceSets.find(ps.targetFaceSet);
-            if (tt == mesh.faceSets.end() || tt->second.empty())
-            {
-                std::string valid;
-                for (const auto& s : mesh.faceSets) valid += " " + s.first;
-                throw inputError
-                (
-                    ps.name + "/targetPatch",
-                    "pair '" + ps.name + "': unknown or empty target patch '"
-                  + ps.targetFaceSet + "'; valid:" + valid
-                );
-            }
-            p.target = std::make_shared<deformableTarget>(mesh, tt->second);
+            p.target = std::make_shared<deformableTarget>
+            (
+                mesh, faces(ps, ps.targetFaceSet, "targetPatch", "target")
+            );
         }
         else
         {
@@ -254,20 +268,8 @@ contactModel::contactModel
                 "pair '" + ps.name + "': friction must be >= 0"
             );
         }
-        auto it = mesh.faceSets.find(ps.faceSet);
-        if (it == mesh.faceSets.end() || it->second.empty())
-        {
-            std::string valid;
-            for (const auto& s : mesh.faceSets) valid += " " + s.first;
-            throw inputError
-            (
-                ps.name + "/patch",
-                "pair '" + ps.name + "': unknown or empty contactor patch '"
-              + ps.faceSet + "'; valid:" + valid
-            );
-        }
         std::set<int> nodeSet;
-        for (const feFace& f : it->second)
+        for (const feFace& f : faces(ps, ps.faceSet, "patch", "contactor"))
         {
             p.faces.push_back(f.nodes);
             nodeSet.insert(f.nodes.begin(), f.nodes.end());

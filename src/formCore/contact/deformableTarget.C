@@ -30,6 +30,32 @@ Eigen::VectorXd lineShapeSecond(int n)
 } // namespace
 
 
+deformableTarget::edgePoint deformableTarget::at
+(
+    int e,
+    double zeta,
+    const Eigen::VectorXd& U
+) const
+{
+    const std::vector<int>& nodes = edges_[e];
+    const int n = int(nodes.size());
+    const Eigen::VectorXd d2 = lineShapeSecond(n);
+    edgePoint E;
+    lineShape(n, zeta, E.N, E.dN);
+    E.x.setZero();
+    E.x1.setZero();
+    E.x2.setZero();
+    for (int b = 0; b < n; ++b)
+    {
+        const Eigen::Vector2d xb = position(nodes[b], U);
+        E.x += E.N(b)*xb;
+        E.x1 += E.dN(b)*xb;
+        E.x2 += d2(b)*xb;
+    }
+    return E;
+}
+
+
 deformableTarget::deformableTarget
 (
     const feMesh& mesh,
@@ -94,22 +120,12 @@ bool deformableTarget::closestZeta
     zeta = std::clamp(2*(y - xs).dot(xe - xs)/chord2 - 1, -3.0, 3.0);
     if (n == 2) return true;
 
-    const Eigen::VectorXd d2 = lineShapeSecond(n);
-    Eigen::VectorXd N, dN;
     for (int it = 0; it < 30; ++it)
     {
-        lineShape(n, zeta, N, dN);
-        Eigen::Vector2d x = Eigen::Vector2d::Zero();
-        Eigen::Vector2d x1 = Eigen::Vector2d::Zero();
-        Eigen::Vector2d x2 = Eigen::Vector2d::Zero();
-        for (int b = 0; b < n; ++b)
-        {
-            const Eigen::Vector2d xb = position(nodes[b], U);
-            x += N(b)*xb;
-            x1 += dN(b)*xb;
-            x2 += d2(b)*xb;
-        }
-        const Eigen::Vector2d s = y - x;
+        const edgePoint E = at(e, zeta, U);
+        const Eigen::Vector2d& x1 = E.x1;
+        const Eigen::Vector2d& x2 = E.x2;
+        const Eigen::Vector2d s = y - E.x;
         const double phi = s.dot(x1);
         double A = -x1.squaredNorm() + s.dot(x2);
         // Far from a strongly curved edge A may lose its sign: fall back
@@ -134,19 +150,12 @@ void deformableTarget::evaluateAt
 {
     const std::vector<int>& nodes = edges_[e];
     const int n = int(nodes.size());
-    const Eigen::VectorXd d2 = lineShapeSecond(n);
-    Eigen::VectorXd N, dN;
-    lineShape(n, zeta, N, dN);
-    Eigen::Vector2d x = Eigen::Vector2d::Zero();
-    Eigen::Vector2d x1 = Eigen::Vector2d::Zero();
-    Eigen::Vector2d x2 = Eigen::Vector2d::Zero();
-    for (int b = 0; b < n; ++b)
-    {
-        const Eigen::Vector2d xb = position(nodes[b], U);
-        x += N(b)*xb;
-        x1 += dN(b)*xb;
-        x2 += d2(b)*xb;
-    }
+    const edgePoint E = at(e, zeta, U);
+    const Eigen::VectorXd& N = E.N;
+    const Eigen::VectorXd& dN = E.dN;
+    const Eigen::Vector2d& x = E.x;
+    const Eigen::Vector2d& x1 = E.x1;
+    const Eigen::Vector2d& x2 = E.x2;
     const double L = x1.norm();
     const Eigen::Vector2d t = x1/L;
     const Eigen::Vector2d nrm = sigma_[e]*Eigen::Vector2d(t(1), -t(0));
@@ -214,7 +223,6 @@ segmentProjection deformableTarget::project
     int edgeOutside = -1;
     double zetaOutside = 0;
 
-    Eigen::VectorXd N, dN;
     for (int e = 0; e < nEdges(); ++e)
     {
         const std::vector<int>& nodes = edges_[e];
@@ -242,13 +250,7 @@ segmentProjection deformableTarget::project
         if (!closestZeta(e, y, U, zeta)) continue;
         if (std::abs(zeta) <= 1 + 1e-12)
         {
-            lineShape(int(nodes.size()), zeta, N, dN);
-            Eigen::Vector2d x = Eigen::Vector2d::Zero();
-            for (std::size_t b = 0; b < nodes.size(); ++b)
-            {
-                x += N(b)*position(nodes[b], U);
-            }
-            const double d = (y - x).norm();
+            const double d = (y - at(e, zeta, U).x).norm();
             if (d < bestInside)
             {
                 bestInside = d;

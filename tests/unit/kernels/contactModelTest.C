@@ -5,6 +5,7 @@
 // force-controlled tool; the tool approach, a tool that can never touch,
 // and chattering detection.
 #include "contactModel.H"
+#include "contactTestTools.H"
 #include "constraintFunctions.H"
 #include "structuredQuadMesh.H"
 #include "formError.H"
@@ -140,31 +141,6 @@ struct contactSetup
 };
 
 
-//- Residual [f_ext (nodal); r (contact)] at (U, x) and the dense tangent
-//  K = -dR/dq from the model's triplets
-void residualAndTangent
-(
-    contactModel& cm,
-    double t,
-    const vecX& U,
-    vecX& R,
-    matX* K
-)
-{
-    const int N = int(U.size());
-    vecX fext = vecX::Zero(N), r;
-    std::vector<contactModel::triplet> tr;
-    cm.evaluate(t, U, fext, r, K ? &tr : nullptr);
-    R.resize(N + r.size());
-    R << fext, r;
-    if (K)
-    {
-        K->setZero(R.size(), R.size());
-        for (const auto& x : tr) (*K)(x.row(), x.col()) += x.value();
-    }
-}
-
-
 void checkTangent(double friction, bool forceControlled)
 {
     const contactSetup s(forceControlled);
@@ -192,34 +168,11 @@ void checkTangent(double friction, bool forceControlled)
     vecX R0;
     matX K;
     const double t = 0.5;
-    residualAndTangent(cm, t, U, R0, &K);
+    test::contactResidual(cm, t, U, R0, &K);
 
     // Central differences over every nodal dof and unknown
     const double h = 1e-7;
-    matX Kfd(R0.size(), R0.size());
-    for (int q = 0; q < N + nC; ++q)
-    {
-        vecX Rp, Rm;
-        vecX Up = U, Um = U;
-        vecX dx = vecX::Zero(nC);
-        if (q < N)
-        {
-            Up(q) += h;
-            Um(q) -= h;
-            residualAndTangent(cm, t, Up, Rp, nullptr);
-            residualAndTangent(cm, t, Um, Rm, nullptr);
-        }
-        else
-        {
-            dx(q - N) = h;
-            cm.addToUnknowns(dx);
-            residualAndTangent(cm, t, U, Rp, nullptr);
-            cm.addToUnknowns(-2*dx);
-            residualAndTangent(cm, t, U, Rm, nullptr);
-            cm.addToUnknowns(dx);
-        }
-        Kfd.col(q) = -(Rp - Rm)/(2*h);
-    }
+    const matX Kfd = test::contactTangentFD(cm, t, U, h);
     const double scale = K.cwiseAbs().maxCoeff();
     EXPECT_GT(scale, 0);
     EXPECT_LT((K - Kfd).cwiseAbs().maxCoeff(), 1e-6*scale)

@@ -5,6 +5,7 @@
 // (contactor node, target edge nodes, multipliers; with and without
 // friction) against central differences.
 #include "contactModel.H"
+#include "contactTestTools.H"
 #include "deformableTarget.H"
 #include "structuredQuadMesh.H"
 #include "quadShape.H"
@@ -167,30 +168,6 @@ TEST(deformableTarget, projectionOnCurvedEdgesMatchesBruteForce)
 }
 
 
-//- Residual [f_ext; r] and the dense tangent K = -dR/dq
-void residualAndTangent
-(
-    contactModel& cm,
-    double t,
-    const vecX& U,
-    vecX& R,
-    matX* K
-)
-{
-    const int N = int(U.size());
-    vecX fext = vecX::Zero(N), r;
-    std::vector<contactModel::triplet> tr;
-    cm.evaluate(t, U, fext, r, K ? &tr : nullptr);
-    R.resize(N + r.size());
-    R << fext, r;
-    if (K)
-    {
-        K->setZero(R.size(), R.size());
-        for (const auto& x : tr) (*K)(x.row(), x.col()) += x.value();
-    }
-}
-
-
 void checkTangent(double friction)
 {
     // The punch overhangs the block's right end: two of its bottom nodes
@@ -238,7 +215,7 @@ void checkTangent(double friction)
     vecX R0;
     matX K;
     const double t = 0.5;
-    residualAndTangent(cm, t, U, R0, &K);
+    test::contactResidual(cm, t, U, R0, &K);
 
     // Action = reaction: the contact forces on all nodes sum to zero
     EXPECT_LT(R0.head(N)(Eigen::seq(0, N - 1, 2)).sum(), 1e-9*R0.head(N).norm());
@@ -246,30 +223,7 @@ void checkTangent(double friction)
     EXPECT_GT(R0.head(N).norm(), 0);
 
     const double h = 1e-7;
-    matX Kfd(R0.size(), R0.size());
-    for (int q = 0; q < N + nC; ++q)
-    {
-        vecX Rp, Rm;
-        if (q < N)
-        {
-            vecX Up = U, Um = U;
-            Up(q) += h;
-            Um(q) -= h;
-            residualAndTangent(cm, t, Up, Rp, nullptr);
-            residualAndTangent(cm, t, Um, Rm, nullptr);
-        }
-        else
-        {
-            vecX dx = vecX::Zero(nC);
-            dx(q - N) = h;
-            cm.addToUnknowns(dx);
-            residualAndTangent(cm, t, U, Rp, nullptr);
-            cm.addToUnknowns(-2*dx);
-            residualAndTangent(cm, t, U, Rm, nullptr);
-            cm.addToUnknowns(dx);
-        }
-        Kfd.col(q) = -(Rp - Rm)/(2*h);
-    }
+    const matX Kfd = test::contactTangentFD(cm, t, U, h);
     const double scale = K.cwiseAbs().maxCoeff();
     EXPECT_GT(scale, 0);
     Eigen::Index i, j;
