@@ -338,10 +338,30 @@ steps
     }
 }
 DICT
-sed -i 's/^endTime .*/endTime         2;/' "$c/system/controlDict"
+sed -i 's/^endTime .*/endTime         2;/; s/^writeInterval .*/writeInterval   0.5;/' \
+    "$c/system/controlDict"
 if run "$c"; then
     Ft=$(summary "$c" frictionForce)
     checkClose "(b) sticking: friction force vs applied T = $T" "$Ft" "$T" 1e-6
+    # Restart at t = 1.5, inside the release ramp of the left face's
+    # constraint (its reaction at t = 1 decays to zero over the pull): the
+    # reaction at the restart state is the load still to ramp down
+    r=$(newCase slidingBlock)
+    cp -r "$c/." "$r/"
+    rm -rf "$r/2" "$r/postProcessing"
+    sed -i 's/^startTime .*/startTime       1.5;/' "$r/system/controlDict"
+    if (cd "$r" && formFoam > log.restart 2>&1) \
+        && grep -q "Restarting from the state written at time 1.5" "$r/log.restart"
+    then
+        checkClose "(b) restart inside the constraint-release ramp: friction force vs continuous run" \
+            "$(summary "$r" frictionForce)" "$Ft" 1e-8
+        checkClose "(b) restart inside the constraint-release ramp: slip of the bottom-right node vs continuous run" \
+            "$(summary "$r" slipRight)" "$(summary "$c" slipRight)" 1e-8
+    else
+        fail "(b) restart inside the constraint-release ramp (see $r/log.restart)"
+        tail -15 "$r/log.restart" | sed 's/^/    | /'
+    fi
+    keepOrRemove "$r"
     # slip during the pull: x movement of the bottom nodes between t = 1 and 2
     slip=$(awk '!/^#/ && NF >= 13 { if (FNR == NR) x[$1] = $4; else { d = $4 - x[$1]; if (d < 0) d = -d; if (d > m) m = d } }
         END { printf "%.3g", m }' "$(contactFile "$c" 1 blockBottom)" "$(contactFile "$c" 2 blockBottom)")

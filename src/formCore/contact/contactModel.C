@@ -1112,6 +1112,9 @@ void contactModel::setState(const std::vector<double>& s)
         m.toolReleased[T] = s[i++] > 0.5;
     }
     m.tCommitted = s[i++];
+    // A commit() right after a restart (formScene commits the read state)
+    // must keep this time: it is the start of the next slip-rate interval
+    m.tEvaluated = m.tCommitted;
     m.xiInitialised = true;
 }
 

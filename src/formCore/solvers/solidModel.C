@@ -81,7 +81,6 @@ struct solidModel::impl
         double force;
         double t0;
         double t1;
-        bool tool = false;      //!< from a tool release (restart state)
     };
     std::vector<releasedDof> released;
 
@@ -863,44 +862,35 @@ void solidModel::releaseTool(const std::string& tool, double t0, double t1)
     }
     for (const auto& f : m.contact->releaseTool(tool, m.Ucommitted))
     {
-        m.released.push_back({f.first, f.second, t0, t1, true});
+        m.released.push_back({f.first, f.second, t0, t1});
     }
     ++m.revision;
 }
 
 
-std::vector<double> solidModel::toolReleaseLoads() const
+std::vector<double> solidModel::releaseLoads() const
 {
     std::vector<double> s;
     for (const auto& r : impl_->released)
     {
-        if (!r.tool) continue;
         s.insert(s.end(), {double(r.dof), r.force, r.t0, r.t1});
     }
     return s;
 }
 
 
-void solidModel::setToolReleaseLoads(const std::vector<double>& s)
+void solidModel::setReleaseLoads(const std::vector<double>& s)
 {
     impl& m = *impl_;
     if (s.size() % 4)
     {
         throw numericalError
         (
-            "solidModel::setToolReleaseLoads: " + std::to_string(s.size())
+            "solidModel::setReleaseLoads: " + std::to_string(s.size())
           + " values, not a multiple of 4 (dof force t0 t1)"
         );
     }
-    auto& rel = m.released;
-    rel.erase
-    (
-        std::remove_if
-        (
-            rel.begin(), rel.end(), [](const impl::releasedDof& r) { return r.tool; }
-        ),
-        rel.end()
-    );
+    m.released.clear();
     for (std::size_t i = 0; i < s.size(); i += 4)
     {
         const int dof = int(std::lround(s[i]));
@@ -908,11 +898,11 @@ void solidModel::setToolReleaseLoads(const std::vector<double>& s)
         {
             throw numericalError
             (
-                "solidModel::setToolReleaseLoads: dof " + std::to_string(dof)
+                "solidModel::setReleaseLoads: dof " + std::to_string(dof)
               + " out of range"
             );
         }
-        rel.push_back({dof, s[i + 1], s[i + 2], s[i + 3], true});
+        m.released.push_back({dof, s[i + 1], s[i + 2], s[i + 3]});
     }
 }
 

@@ -262,10 +262,13 @@ void Foam::formScene::applyActions(const processStep& step)
                 << t.second << nl;
             if (key == "release")
             {
+                // A step begun before the restart time: its release loads
+                // were read with the state (t1 = t0: release only)
+                const bool restored = step.startTime < steps_.startTime - 1e-12;
                 s.release
                 (
                     t.first, t.second, d,
-                    max(step.startTime, steps_.startTime), step.endTime
+                    restored ? step.endTime : step.startTime, step.endTime
                 );
             }
             else
@@ -285,10 +288,9 @@ void Foam::formScene::applyActions(const processStep& step)
         }
         const wordList tools = d.get<wordList>("releaseTools");
         Info<< "    release tools " << tools << nl;
-        contact_->releaseTools
-        (
-            tools, d, max(step.startTime, steps_.startTime), step.endTime
-        );
+        // (after a restart the tools' released flags and loads come with
+        // the state, and releaseTools skips released tools)
+        contact_->releaseTools(tools, d, step.startTime, step.endTime);
     }
     if (d.found("pin"))
     {
@@ -728,6 +730,10 @@ Foam::formScene::formScene(Time& runTime)
     if (steps_.startTime > 0 && solids_[0].readState(runTime.timeName()))
     {
         solids_[0].model().commit();
+        // Forces of the restored state (reactions, contact and tool
+        // forces) for the first summary record
+        form::vecX r;
+        solids_[0].model().evaluate(steps_.startTime, r, false);
         Info<< "Restarting from the state written at time "
             << runTime.timeName() << endl;
     }

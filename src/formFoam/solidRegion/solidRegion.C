@@ -132,7 +132,14 @@ void Foam::solidRegion::release
 )
 {
     const std::vector<int>& nodes = patchNodes(patch, dict);
-    // Current reactions (also after a restart, before any step)
+    if (!(t1 > t0))
+    {
+        // Restored release (a step begun before a restart): its loads
+        // come with the restart state
+        for (const label c : components) model_->releaseConstraint(nodes, c);
+        return;
+    }
+    // Current reactions
     form::vecX r;
     model_->evaluate(t0, r, false);
     for (const label c : components)
@@ -667,17 +674,15 @@ void Foam::solidRegion::write()
         IOField<scalar> contactState(io("contactState"), scalarField(cs.size()));
         forAll(contactState, i) contactState[i] = cs[i];
         ok = contactState.write() && ok;
-        // Loads of released tools still ramping down (dof force t0 t1)
-        const std::vector<double> rl = model_->toolReleaseLoads();
-        if (!rl.empty())
-        {
-            IOField<scalar> toolRelease
-            (
-                io("feToolRelease"), scalarField(rl.size())
-            );
-            forAll(toolRelease, i) toolRelease[i] = rl[i];
-            ok = toolRelease.write() && ok;
-        }
+    }
+    // Loads of released constraints and tools (dof force t0 t1), for a
+    // restart inside their ramps
+    const std::vector<double> rl = model_->releaseLoads();
+    if (!rl.empty())
+    {
+        IOField<scalar> released(io("feReleased"), scalarField(rl.size()));
+        forAll(released, i) released[i] = rl[i];
+        ok = released.write() && ok;
     }
     ok = pointD.write() && ok;
     ok = D.write() && ok;
@@ -805,29 +810,27 @@ bool Foam::solidRegion::readState(const word& timeName)
                 << " (was constant/contactProperties changed?)"
                 << exit(FatalError);
         }
-        // Tool releases begun before the restart: the loads still ramping
-        // down (written only when a tool has been released)
-        IOobject rio
-        (
-            "feToolRelease", timeName, *mesh_,
-            IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
-        );
-        if (rio.typeHeaderOk<IOField<scalar>>(true))
+    }
+    // Releases begun before the restart: their loads (written only when
+    // something was released); formScene then re-applies the release
+    // actions of those steps without new loads
+    IOobject rio
+    (
+        "feReleased", timeName, *mesh_,
+        IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+    );
+    if (rio.typeHeaderOk<IOField<scalar>>(true))
+    {
+        IOField<scalar> rl(rio);
+        try
         {
-            IOField<scalar> rl(rio);
-            try
-            {
-                model_->setToolReleaseLoads
-                (
-                    std::vector<double>(rl.begin(), rl.end())
-                );
-            }
-            catch (const form::numericalError& e)
-            {
-                FatalErrorInFunction
-                    << "Restart state " << rl.objectPath() << ": "
-                    << e.what() << exit(FatalError);
-            }
+            model_->setReleaseLoads(std::vector<double>(rl.begin(), rl.end()));
+        }
+        catch (const form::numericalError& e)
+        {
+            FatalErrorInFunction
+                << "Restart state " << rl.objectPath() << ": " << e.what()
+                << exit(FatalError);
         }
     }
     return true;
