@@ -323,9 +323,11 @@ contactModel::contactModel
         const double rbar = nRadius ? radiusSum/nRadius : 0;
         depth = 2*M_PI*std::max(rbar, spacing);
     }
-    m.k = controls.stiffness > 0 ? controls.stiffness : modulus*depth;
+    // Automatic split of the regularised law g f = epsN k = 1e-10 E l^2:
+    // the knee of w at a pressure of about 1e-7 E (contactModel.H)
+    m.k = controls.stiffness > 0 ? controls.stiffness : 1e-4*modulus*depth;
     m.epsN =
-        controls.epsilonN > 0 ? controls.epsilonN : std::pow(1e-5*spacing, 2);
+        controls.epsilonN > 0 ? controls.epsilonN : std::pow(1e-3*spacing, 2);
     // epsT: set at the first increment from the tools' speed (automatic
     // rule) unless given
     m.epsT = controls.epsilonT > 0 ? controls.epsilonT : 0;
