@@ -121,6 +121,24 @@ summary() { awk -v e="$2" '$1 == e { sub(/;$/, "", $2); print $2 }' "$1/postProc
 contactFile() { echo "$1/postProcessing/contact/$2/$3.dat"; }
 keepOrRemove() { [ -n "${KEEP:-}" ] && echo "    kept $*" || rm -rf "$@"; }
 reportFailure() { fail "$1 (see $2/log.formFoam)"; tail -15 "$2/log.formFoam" | sed 's/^/    | /'; }
+# restartCopy <case> <time> <later time dirs...>: a copy of the run <case>
+# without the later times and postProcessing, restarted at <time>; prints
+# its path. restarted <copy> <time>: formFoam ran and read that state
+restartCopy()
+{
+    local c=$1 t=$2 r
+    shift 2
+    r=$(mktemp -d "${TMPDIR:-/tmp}/formFoamContact.XXXXXX")
+    cp -r "$c/." "$r/"
+    for d in "$@" postProcessing; do rm -rf "${r:?}/$d"; done
+    sed -i "s/^startTime .*/startTime       $t;/" "$r/system/controlDict"
+    echo "$r"
+}
+restarted()
+{
+    (cd "$1" && formFoam > log.restart 2>&1) \
+        && grep -q "Restarting from the state written at time $2" "$1/log.restart"
+}
 
 #------------------------------------------------------------------------------
 # 1. Flat punch
@@ -304,12 +322,8 @@ if run "$c"; then
     # Restart from the state written at t = 2 (contact multipliers and
     # slip origins in 2/block/contactState): the sliding step continues
     # as in the uninterrupted run
-    r=$(newCase slidingBlock)
-    cp -r "$c/." "$r/"
-    rm -rf "$r/3" "$r/postProcessing"
-    sed -i 's/^startTime .*/startTime       2;/' "$r/system/controlDict"
-    if (cd "$r" && formFoam > log.restart 2>&1) \
-        && grep -q "Restarting from the state written at time 2" "$r/log.restart"
+    r=$(restartCopy "$c" 2 3)
+    if restarted "$r" 2
     then
         pass "restart with contact reads the state at t = 2"
         checkClose "restart: friction force equals the continuous run" \
@@ -351,12 +365,8 @@ if run "$c"; then
     # Restart at t = 1.5, inside the release ramp of the left face's
     # constraint (its reaction at t = 1 decays to zero over the pull): the
     # reaction at the restart state is the load still to ramp down
-    r=$(newCase slidingBlock)
-    cp -r "$c/." "$r/"
-    rm -rf "$r/2" "$r/postProcessing"
-    sed -i 's/^startTime .*/startTime       1.5;/' "$r/system/controlDict"
-    if (cd "$r" && formFoam > log.restart 2>&1) \
-        && grep -q "Restarting from the state written at time 1.5" "$r/log.restart"
+    r=$(restartCopy "$c" 1.5 2)
+    if restarted "$r" 1.5
     then
         checkClose "(b) restart inside the constraint-release ramp: friction force vs continuous run" \
             "$(summary "$r" frictionForce)" "$Ft" 1e-8
@@ -415,12 +425,8 @@ if run "$c"; then
     checkClose "release ramp: top displacement at t = 1.75 vs -0.01 x 0.25" "$uMid" -0.0025 1e-6
     checkBelow "release ramp: |top displacement| at t = 2 (fully released)" \
         "$(awk -v u="$uEnd" 'BEGIN { printf "%.3g", u < 0 ? -u : u }')" 1e-9
-    r=$(newCase flatPunch)
-    cp -r "$c/." "$r/"
-    rm -rf "$r/1.75" "$r/2" "$r/postProcessing"
-    sed -i 's/^startTime .*/startTime       1.5;/' "$r/system/controlDict"
-    if (cd "$r" && formFoam > log.restart 2>&1) \
-        && grep -q "Restarting from the state written at time 1.5" "$r/log.restart"
+    r=$(restartCopy "$c" 1.5 1.75 2)
+    if restarted "$r" 1.5
     then
         pass "restart inside the release ramp reads the state at t = 1.5"
         checkClose "restart inside the release ramp: top displacement at t = 1.75 vs continuous run" \
