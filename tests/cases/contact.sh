@@ -122,7 +122,7 @@ contactFile() { echo "$1/postProcessing/contact/$2/$3.dat"; }
 keepOrRemove() { [ -n "${KEEP:-}" ] && echo "    kept $*" || rm -rf "$@"; }
 reportFailure() { fail "$1 (see $2/log.formFoam)"; tail -15 "$2/log.formFoam" | sed 's/^/    | /'; }
 # restartCopy <case> <time> <later time dirs...>: a copy of the run <case>
-# without the later times and postProcessing, restarted at <time>; prints
+# without the later times (postProcessing kept, as a user would), restarted at <time>; prints
 # its path. restarted <copy> <time>: formFoam ran and read that state
 restartCopy()
 {
@@ -130,7 +130,7 @@ restartCopy()
     shift 2
     r=$(mktemp -d "${TMPDIR:-/tmp}/formFoamContact.XXXXXX")
     cp -r "$c/." "$r/"
-    for d in "$@" postProcessing; do rm -rf "${r:?}/$d"; done
+    for d in "$@"; do rm -rf "${r:?}/$d"; done
     sed -i "s/^startTime .*/startTime       $t;/" "$r/system/controlDict"
     echo "$r"
 }
@@ -413,7 +413,9 @@ DICT
     sed -i 's/^endTime .*/endTime         2;/; s/^writeInterval .*/writeInterval   0.25;/' \
         "$d/system/controlDict"
     sed -i 's|^    topDisplacement .*|    topDisplacement { type displacement; point (0 5 0); component y; }\
-    topMidRelease { type displacement; point (0 5 0); component y; time 1.75; }|' \
+    topMidRelease { type displacement; point (0 5 0); component y; time 1.75; }\
+    punchForceMax { type toolForce; tool punch; component y; scale -1; statistic max; }\
+    topAtPress { type displacement; point (0 5 0); component y; time 0.75; }|' \
         "$d/system/solidSolution"
     echo "$d"
 }
@@ -433,6 +435,20 @@ if run "$c"; then
             "$(summary "$r" topMidRelease)" "$uMid" 1e-8
         checkBelow "restart inside the release ramp: |top displacement| at t = 2" \
             "$(awk -v u="$(summary "$r" topDisplacement)" 'BEGIN { printf "%.3g", u < 0 ? -u : u }')" 1e-9
+        # the history before the restart is kept and replayed: the largest
+        # punch force (at t = 1) and a value at t = 0.75 come out as in
+        # the continuous run, and history.dat has each time once
+        checkClose "restart: punchForceMax (reached before the restart) vs continuous run" \
+            "$(summary "$r" punchForceMax)" "$(summary "$c" punchForceMax)" 1e-12
+        checkClose "restart: value at t = 0.75 (before the restart) vs continuous run" \
+            "$(summary "$r" topAtPress)" "$(summary "$c" topAtPress)" 1e-12
+        if cmp -s <(awk '{ print $1 }' "$r/postProcessing/history.dat") \
+                  <(awk '{ print $1 }' "$c/postProcessing/history.dat")
+        then
+            pass "restart: history.dat has the times of the continuous run"
+        else
+            fail "restart: history.dat times differ from the continuous run"
+        fi
     else
         fail "restart inside the release ramp (see $r/log.restart)"
         tail -15 "$r/log.restart" | sed 's/^/    | /'

@@ -524,6 +524,48 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
 }
 
 
+void Foam::formScene::updateEntry
+(
+    summaryEntry& e,
+    scalar time,
+    scalar v,
+    bool first
+)
+{
+    const scalar tPrev = e.prevTime, vPrev = e.prevValue;
+    e.prevTime = time;
+    e.prevValue = v;
+    if (e.atTime)
+    {
+        // Value at e.time: linear interpolation between the converged
+        // steps that bracket it (exact when a step ends on it)
+        const scalar tol = 1e-9*max(mag(e.time), 1.0);
+        if (mag(time - e.time) <= tol)
+        {
+            e.value = v;
+            e.set = true;
+        }
+        else if (!first && tPrev < e.time && e.time < time)
+        {
+            const scalar w = (e.time - tPrev)/(time - tPrev);
+            e.value = vPrev + w*(v - vPrev);
+            e.set = true;
+        }
+        return;
+    }
+    if
+    (
+        !e.set || e.statistic == "final"
+     || (e.statistic == "max" && v > e.value)
+     || (e.statistic == "min" && v < e.value)
+    )
+    {
+        e.value = v;
+    }
+    e.set = true;
+}
+
+
 void Foam::formScene::recordSummary(scalar time, bool first)
 {
     summaryTime_ = time;
@@ -546,39 +588,56 @@ void Foam::formScene::recordSummary(scalar time, bool first)
     {
         const scalar v = evaluate(e);
         os << ' ' << v;
-        const scalar tPrev = e.prevTime, vPrev = e.prevValue;
-        e.prevTime = time;
-        e.prevValue = v;
-        if (e.atTime)
-        {
-            // Value at e.time: linear interpolation between the converged
-            // steps that bracket it (exact when a step ends on it)
-            const scalar tol = 1e-9*max(mag(e.time), 1.0);
-            if (mag(time - e.time) <= tol)
-            {
-                e.value = v;
-                e.set = true;
-            }
-            else if (!first && tPrev < e.time && e.time < time)
-            {
-                const scalar w = (e.time - tPrev)/(time - tPrev);
-                e.value = vPrev + w*(v - vPrev);
-                e.set = true;
-            }
-            continue;
-        }
-        if
-        (
-            !e.set || e.statistic == "final"
-         || (e.statistic == "max" && v > e.value)
-         || (e.statistic == "min" && v < e.value)
-        )
-        {
-            e.value = v;
-        }
-        e.set = true;
+        updateEntry(e, time, v, first);
     }
     os << '\n';
+}
+
+
+bool Foam::formScene::replayHistory(scalar restartTime)
+{
+    const fileName file = runTime_.path()/"postProcessing"/"history.dat";
+    if (!isFile(file)) return false;
+    std::ifstream is(file);
+    std::string header;
+    if (!std::getline(is, header) || header.rfind("# time", 0) != 0)
+    {
+        return false;
+    }
+    // Columns by name; entries without a column start afresh
+    std::istringstream hs(header.substr(1));
+    std::vector<std::string> names;
+    for (std::string w; hs >> w;) names.push_back(w);
+    std::vector<label> column(summary_.size(), -1);
+    forAll(summary_, k)
+    {
+        const auto it =
+            std::find(names.begin(), names.end(), summary_[k].name);
+        if (it != names.end()) column[k] = label(it - names.begin());
+    }
+    // The rows before the restart time (later ones belong to the
+    // abandoned continuation and are dropped)
+    std::vector<std::string> kept;
+    bool first = true;
+    const scalar tol = 1e-9*max(mag(restartTime), 1.0);
+    for (std::string line; std::getline(is, line);)
+    {
+        std::istringstream ls(line);
+        std::vector<scalar> v;
+        for (scalar x; ls >> x;) v.push_back(x);
+        if (v.size() != names.size() || v[0] >= restartTime - tol) continue;
+        forAll(summary_, k)
+        {
+            if (column[k] > 0) updateEntry(summary_[k], v[0], v[column[k]], first);
+        }
+        first = false;
+        kept.push_back(line);
+    }
+    is.close();
+    std::ofstream os(file, std::ios::trunc);
+    os << header << '\n';
+    for (const std::string& line : kept) os << line << '\n';
+    return !kept.empty();
 }
 
 
@@ -734,6 +793,7 @@ Foam::formScene::formScene(Time& runTime)
         // forces) for the first summary record
         form::vecX r;
         solids_[0].model().evaluate(steps_.startTime, r, false);
+        restarted_ = true;
         Info<< "Restarting from the state written at time "
             << runTime.timeName() << endl;
     }
@@ -768,7 +828,10 @@ void Foam::formScene::run()
         solid.model().times().output += outClock.elapsedTime();
     };
 
-    recordSummary(steps_.startTime, true);
+    // After a restart the history before it is kept and replayed, so
+    // that statistics (max, min) and values at earlier times stand
+    const bool replayed = restarted_ && replayHistory(steps_.startTime);
+    recordSummary(steps_.startTime, !replayed);
 
     for (const processStep& ps : schedule_)
     {
