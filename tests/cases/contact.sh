@@ -139,6 +139,26 @@ restarted()
     (cd "$1" && formFoam > log.restart 2>&1) \
         && grep -q "Restarting from the state written at time $2" "$1/log.restart"
 }
+# slidingRestart <label> <case> <time> <later time dirs...>: restart the
+# sliding-block run <case> at <time>; friction force and slip of the
+# bottom-right node must equal the continuous run's (1e-8)
+slidingRestart()
+{
+    local label=$1 c=$2 t=$3 r
+    shift 3
+    r=$(restartCopy "$c" "$t" "$@")
+    if restarted "$r" "$t"; then
+        pass "$label: reads the state at t = $t"
+        checkClose "$label: friction force vs continuous run" \
+            "$(summary "$r" frictionForce)" "$(summary "$c" frictionForce)" 1e-8
+        checkClose "$label: slip of the bottom-right node vs continuous run" \
+            "$(summary "$r" slipRight)" "$(summary "$c" slipRight)" 1e-8
+    else
+        fail "$label (see $r/log.restart)"
+        tail -15 "$r/log.restart" | sed 's/^/    | /'
+    fi
+    keepOrRemove "$r"
+}
 
 #------------------------------------------------------------------------------
 # 1. Flat punch
@@ -322,19 +342,7 @@ if run "$c"; then
     # Restart from the state written at t = 2 (contact multipliers and
     # slip origins in 2/block/contactState): the sliding step continues
     # as in the uninterrupted run
-    r=$(restartCopy "$c" 2 3)
-    if restarted "$r" 2
-    then
-        pass "restart with contact reads the state at t = 2"
-        checkClose "restart: friction force equals the continuous run" \
-            "$(summary "$r" frictionForce)" "$Ft" 1e-8
-        checkClose "restart: slip of the bottom-right node equals the continuous run" \
-            "$(summary "$r" slipRight)" "$(summary "$c" slipRight)" 1e-8
-    else
-        fail "restart run with contact (see $r/log.restart)"
-        tail -15 "$r/log.restart" | sed 's/^/    | /'
-    fi
-    keepOrRemove "$r"
+    slidingRestart "restart inside a sliding step" "$c" 2 3
 else
     reportFailure "sliding block run" "$c"
 fi
@@ -365,18 +373,7 @@ if run "$c"; then
     # Restart at t = 1.5, inside the release ramp of the left face's
     # constraint (its reaction at t = 1 decays to zero over the pull): the
     # reaction at the restart state is the load still to ramp down
-    r=$(restartCopy "$c" 1.5 2)
-    if restarted "$r" 1.5
-    then
-        checkClose "(b) restart inside the constraint-release ramp: friction force vs continuous run" \
-            "$(summary "$r" frictionForce)" "$Ft" 1e-8
-        checkClose "(b) restart inside the constraint-release ramp: slip of the bottom-right node vs continuous run" \
-            "$(summary "$r" slipRight)" "$(summary "$c" slipRight)" 1e-8
-    else
-        fail "(b) restart inside the constraint-release ramp (see $r/log.restart)"
-        tail -15 "$r/log.restart" | sed 's/^/    | /'
-    fi
-    keepOrRemove "$r"
+    slidingRestart "(b) restart inside the constraint-release ramp" "$c" 1.5 2
     # slip during the pull: x movement of the bottom nodes between t = 1 and 2
     slip=$(awk '!/^#/ && NF >= 13 { if (FNR == NR) x[$1] = $4; else { d = $4 - x[$1]; if (d < 0) d = -d; if (d > m) m = d } }
         END { printf "%.3g", m }' "$(contactFile "$c" 1 blockBottom)" "$(contactFile "$c" 2 blockBottom)")
