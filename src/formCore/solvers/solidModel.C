@@ -100,6 +100,16 @@ struct solidModel::impl
     sparseMatrix Ksys;
     std::vector<Eigen::Triplet<double>> triplets;
 
+    //- Inertia (setInertia): rho M_e per element, M over all dofs, the
+    //  acceleration law a = alpha U + accelerationOffset and the inertia
+    //  forces M a of the last evaluation
+    bool inertia = false;
+    std::vector<matX> Me;
+    sparseMatrix M;
+    double alpha = 0;
+    vecX accelerationOffset;
+    vecX finertia;
+
     phaseTimes times;
 
     int nDofs() const { return mesh.nNodes()*nDim; }
@@ -739,6 +749,10 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
                             fint[nodes[a]*nDim + i] += fe(a*nDim + i);
                         }
                     }
+                    if (wantTangent && m.inertia && m.alpha != 0)
+                    {
+                        Ke.noalias() += m.alpha*m.Me[e];
+                    }
                     if (wantTangent)
                     {
                         const int n = m.pattern.nElementDofs(e);
@@ -786,6 +800,16 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
         m.fext(r.dof) += w*r.force;
     }
 
+    // Inertia forces M a(U) (dynamic analysis)
+    if (m.inertia)
+    {
+        m.finertia = m.M*(m.alpha*m.U + m.accelerationOffset);
+    }
+    else
+    {
+        m.finertia.setZero(m.nDofs());
+    }
+
     const int nFree = m.numbering.nFree();
     m.times.assembly += secondsSince(start);
     if (!m.contact)
@@ -794,7 +818,7 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
         for (int k = 0; k < nFree; ++k)
         {
             const int d = m.numbering.freeDofs[k];
-            residual(k) = m.fext(d) - m.fint(d);
+            residual(k) = m.fext(d) - m.fint(d) - m.finertia(d);
         }
         return residual.allFinite();
     }
@@ -813,7 +837,7 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
     for (int k = 0; k < nFree; ++k)
     {
         const int d = m.numbering.freeDofs[k];
-        residual(k) = m.fext(d) - m.fint(d);
+        residual(k) = m.fext(d) - m.fint(d) - m.finertia(d);
     }
     residual.tail(nC) = rc;
     if (wantTangent) m.buildSystemMatrix();
@@ -1071,6 +1095,149 @@ void solidModel::setMaterialStates
 }
 
 
+void solidModel::setInertia
+(
+    const std::map<std::string, double>& density,
+    bool lumped
+)
+{
+    impl& m = *impl_;
+    m.requireFinalised("setInertia");
+    const int nElements = int(m.elemBlock.size());
+    m.Me.assign(nElements, matX());
+    std::vector<Eigen::Triplet<double>> entries;
+    matX X, u;
+    for (int e = 0; e < nElements; ++e)
+    {
+        const impl::blockData& b = m.blocks[m.elemBlock[e]];
+        const elementBlock& blk = m.mesh.blocks[m.elemBlock[e]];
+        auto it = density.find(blk.materialName);
+        if (it == density.end())
+        {
+            throw inputError
+            (
+                "rho",
+                "dynamic analysis: no density for material '"
+              + blk.materialName + "' (block '" + blk.name + "')"
+            );
+        }
+        if (!(it->second > 0) || !std::isfinite(it->second))
+        {
+            throw inputError
+            (
+                "rho",
+                "material '" + blk.materialName + "': density must be"
+                " positive, got " + std::to_string(it->second)
+            );
+        }
+        m.gather(e, X, u);
+        matX Me = it->second*b.kernel->massMatrix(X);
+        if (lumped)
+        {
+            const vecX rowSum = Me.rowwise().sum();
+            Me = rowSum.asDiagonal();
+        }
+        const int* nodes = blk.nodes(m.elemLocal[e]);
+        const int n = blk.nodesPerElement*m.nDim;
+        for (int p = 0; p < n; ++p)
+        {
+            const int gp = nodes[p/m.nDim]*m.nDim + p%m.nDim;
+            for (int q = 0; q < n; ++q)
+            {
+                if (Me(p, q) == 0) continue;
+                const int gq = nodes[q/m.nDim]*m.nDim + q%m.nDim;
+                entries.emplace_back(gp, gq, Me(p, q));
+            }
+        }
+        m.Me[e] = std::move(Me);
+    }
+    m.M.resize(m.nDofs(), m.nDofs());
+    m.M.setFromTriplets(entries.begin(), entries.end());
+    m.M.makeCompressed();
+    m.inertia = true;
+    m.alpha = 0;
+    m.accelerationOffset = vecX::Zero(m.nDofs());
+    m.finertia = vecX::Zero(m.nDofs());
+}
+
+
+bool solidModel::hasInertia() const { return impl_->inertia; }
+
+const sparseMatrix& solidModel::massMatrix() const
+{
+    impl_->requireFinalised("massMatrix");
+    if (!impl_->inertia)
+    {
+        throw numericalError
+        (
+            "solidModel::massMatrix: the model has no inertia (static"
+            " analysis)"
+        );
+    }
+    return impl_->M;
+}
+
+
+void solidModel::setAccelerationLaw(double alpha, const vecX& b)
+{
+    impl& m = *impl_;
+    if (!m.inertia)
+    {
+        throw numericalError
+        (
+            "solidModel::setAccelerationLaw: the model has no inertia"
+        );
+    }
+    if (b.size() != m.nDofs())
+    {
+        throw numericalError
+        (
+            "solidModel::setAccelerationLaw: b has "
+          + std::to_string(b.size()) + " entries for "
+          + std::to_string(m.nDofs()) + " dofs"
+        );
+    }
+    m.alpha = alpha;
+    m.accelerationOffset = b;
+}
+
+
+vecX solidModel::acceleration() const
+{
+    const impl& m = *impl_;
+    if (!m.inertia) return vecX::Zero(m.nDofs());
+    return m.alpha*m.U + m.accelerationOffset;
+}
+
+
+const vecX& solidModel::internalForce() const { return impl_->fint; }
+const vecX& solidModel::externalForce() const { return impl_->fext; }
+const vecX& solidModel::inertiaForce() const { return impl_->finertia; }
+
+
+solidModel::savedState solidModel::save() const
+{
+    const impl& m = *impl_;
+    savedState s;
+    s.U = m.Ucommitted;
+    s.materialStates = m.committed;
+    if (m.contact) s.contact = m.contact->state();
+    s.releaseLoads = releaseLoads();
+    return s;
+}
+
+
+void solidModel::restore(const savedState& s)
+{
+    impl& m = *impl_;
+    setDisplacement(s.U);
+    m.Ucommitted = s.U;
+    setMaterialStates(s.materialStates);
+    if (m.contact) m.contact->setState(s.contact);
+    setReleaseLoads(s.releaseLoads);
+}
+
+
 void solidModel::commit()
 {
     impl& m = *impl_;
@@ -1099,7 +1266,8 @@ Eigen::Vector3d solidModel::reaction(const std::vector<int>& nodes) const
         for (int i = 0; i < m.nDim; ++i)
         {
             const int d = node*m.nDim + i;
-            R(i) += m.fint(d) - m.fext(d);
+            R(i) += m.fint(d) - m.fext(d)
+              + (m.finertia.size() ? m.finertia(d) : 0.0);
         }
     }
     return R;
@@ -1123,7 +1291,9 @@ double solidModel::reactionNorm() const
     double s = 0;
     for (int d : m.numbering.prescribedDofs)
     {
-        const double r = m.fint(d) - m.fext(d);
+        const double r =
+            m.fint(d) - m.fext(d)
+          + (m.finertia.size() ? m.finertia(d) : 0.0);
         s += r*r;
     }
     return std::sqrt(s);

@@ -591,17 +591,58 @@ void staticSolver::run
             stepReport report;
             report.step = step;
             report.cutbacks = cutbacks;
-            const vecX before = newton_.extrapolate ? model_.state() : vecX();
-            if (solveIncrement(t, t1, report))
+            const int nStages = integrator_ ? integrator_->nStages() : 1;
+            solidModel::savedState start;
+            if (nStages > 1) start = model_.save();
+            bool ok = true;
+            int stagesDone = 0;
+            for (int stage = 0; stage < nStages && ok; ++stage)
             {
+                const double ts0 =
+                    stage == 0 ? t : integrator_->stageEnd(0, t, t1);
+                const double ts1 =
+                    integrator_ ? integrator_->stageEnd(stage, t, t1) : t1;
+                if (nStages > 1)
+                {
+                    std::snprintf
+                    (
+                        line, sizeof(line), "  stage %d  t = %.6g\n",
+                        stage + 1, ts1
+                    );
+                    log_<< line;
+                }
+                if (integrator_) integrator_->beginStage(stage, t, t1, model_);
+                const vecX before =
+                    newton_.extrapolate ? model_.state() : vecX();
+                stepReport stageReport;
+                ok = solveIncrement(ts0, ts1, stageReport);
+                report.iterations += stageReport.iterations;
+                for (std::size_t k = 0; k < stageReport.residualNorms.size(); ++k)
+                {
+                    report.residualNorms.push_back
+                    (
+                        stageReport.residualNorms[k]
+                    );
+                    report.updateNorms.push_back(stageReport.updateNorms[k]);
+                    report.energyNorms.push_back(stageReport.energyNorms[k]);
+                }
+                if (!ok) break;
                 model_.commit();
+                ++stagesDone;
+                if (integrator_) integrator_->endStage(stage, t, t1, model_);
                 if (newton_.extrapolate)
                 {
                     previousIncrement_ = lastIncrement_;
                     previousDeltaT_ = lastDeltaT_;
                     lastIncrement_ = model_.state() - before;
-                    lastDeltaT_ = t1 - t;
+                    lastDeltaT_ = ts1 - ts0;
                 }
+            }
+            report.time = t1;
+            report.deltaT = t1 - t;
+            if (ok)
+            {
+                if (integrator_) integrator_->commitStep();
                 totalIterations_ += report.iterations;
                 std::snprintf
                 (
@@ -615,7 +656,7 @@ void staticSolver::run
                 if
                 (
                     cutbacks == 0
-                 && report.iterations <= steps_.easyIterations
+                 && report.iterations <= nStages*steps_.easyIterations
                 )
                 {
                     dt = std::min(dt*steps_.growthFactor, steps_.maxDeltaT);
@@ -623,6 +664,11 @@ void staticSolver::run
                 break;
             }
 
+            if (integrator_) integrator_->revertStep();
+            if (stagesDone > 0)
+            {
+                model_.restore(start);
+            }
             model_.revert();
             ++cutbacks;
             const double tried = t1 - t;
@@ -654,6 +700,20 @@ void staticSolver::run
             dt = next;
         }
     }
+}
+
+
+void staticSolver::setIntegrator(timeIntegrator* integrator)
+{
+    if (integrator && !model_.hasInertia())
+    {
+        throw numericalError
+        (
+            "staticSolver::setIntegrator: the model has no inertia"
+            " (solidModel::setInertia)"
+        );
+    }
+    integrator_ = integrator;
 }
 
 
