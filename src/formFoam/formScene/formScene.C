@@ -2,6 +2,7 @@
 #include "dictionaryChecks.H"
 #include "regionProperties.H"
 #include "OFstream.H"
+#include "IOField.H"
 #include "OSspecific.H"
 #include "clockTime.H"
 #include "autoSolver.H"
@@ -26,16 +27,52 @@ void Foam::formScene::readSolution()
             "maxCutbacks", "maxIterations", "forceTolerance",
             "energyTolerance", "lineSearch", "lineSearchType", "predictor",
             "growthFactor",
-            "growthIterations", "summary"
+            "growthIterations", "summary", "integrator", "gamma", "mass"
         }
     );
     const word analysis = d.getOrDefault<word>("analysis", "static");
-    if (analysis != "static")
+    if (!wordList{"static", "dynamic"}.found(analysis))
     {
         FatalIOErrorInFunction(d)
-            << "analysis '" << analysis << "' in " << d.name()
-            << " is not available yet" << nl << "    Valid: static"
-            << exit(FatalIOError);
+            << "Entry 'analysis' in " << d.name() << ": unknown '"
+            << analysis << "'; valid: static dynamic" << exit(FatalIOError);
+    }
+    dynamic_ = analysis == "dynamic";
+    if (!dynamic_)
+    {
+        for (const word key : {"integrator", "gamma", "mass"})
+        {
+            if (d.found(key))
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry '" << key << "' in " << d.name() << " needs"
+                    << " analysis dynamic (the analysis is static)"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    integratorName_ = d.getOrDefault<word>("integrator", "bathe");
+    gamma_ = d.getOrDefault<scalar>("gamma", 0.5);
+    const word mass = d.getOrDefault<word>("mass", "consistent");
+    if (!wordList{"consistent", "lumped"}.found(mass))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'mass' in " << d.name() << ": unknown '" << mass
+            << "'; valid: consistent lumped" << exit(FatalIOError);
+    }
+    lumpedMass_ = mass == "lumped";
+    if (dynamic_)
+    {
+        try
+        {
+            integrator_.reset(new form::timeIntegrator(integratorName_, gamma_));
+        }
+        catch (const form::inputError& err)
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry '" << err.entry().c_str() << "' in " << d.name()
+                << ": " << err.what() << exit(FatalIOError);
+        }
     }
 
     steps_.startTime = runTime_.startTime().value();
@@ -99,6 +136,55 @@ void Foam::formScene::readSolution()
 }
 
 
+void Foam::formScene::writeEnergy(scalar time)
+{
+    const form::energyBalance& e = integrator_->energy();
+    const scalar level = max(e.externalWork, e.kinetic + e.internalWork);
+    Info<< "    energy: kinetic " << e.kinetic << ", internal work "
+        << e.internalWork << ", external work " << e.externalWork
+        << ", dissipated by the scheme " << e.dissipated();
+    if (level > 0) Info<< " (" << e.dissipated()/level << ")";
+    Info<< endl;
+    if (!energyFile_)
+    {
+        const fileName dir = runTime_.path()/"postProcessing";
+        mkDir(dir);
+        // After a restart the rows up to the restart time stand
+        const fileName path = dir/"energy.dat";
+        std::vector<std::string> kept;
+        if (restarted_ && isFile(path))
+        {
+            std::ifstream in(path);
+            std::string line;
+            while (std::getline(in, line))
+            {
+                std::istringstream is(line);
+                double t;
+                if (line.empty() || line[0] == '#' || !(is >> t)
+                 || t <= steps_.startTime + 1e-12)
+                {
+                    kept.push_back(line);
+                }
+            }
+        }
+        energyFile_.reset(new OFstream(path));
+        if (kept.empty())
+        {
+            (*energyFile_)
+                << "# time kinetic internalWork externalWork dissipated"
+                << nl;
+        }
+        for (const std::string& line : kept)
+        {
+            (*energyFile_) << line.c_str() << nl;
+        }
+    }
+    (*energyFile_)
+        << time << ' ' << e.kinetic << ' ' << e.internalWork << ' '
+        << e.externalWork << ' ' << e.dissipated() << endl;
+}
+
+
 void Foam::formScene::printScene() const
 {
     Info<< nl << "Scene" << nl;
@@ -106,7 +192,18 @@ void Foam::formScene::printScene() const
     {
         Info<< "    " << s.describe().c_str() << nl;
     }
-    Info<< "    analysis: static (no inertia)" << nl
+    if (integrator_)
+    {
+        Info<< "    analysis: dynamic, " << integratorName_;
+        if (integrator_->nStages() > 1) Info<< " (gamma " << gamma_ << ")";
+        Info<< ", " << (lumpedMass_ ? "lumped" : "consistent")
+            << " mass, density " << solids_[0].density() << nl;
+    }
+    else
+    {
+        Info<< "    analysis: static (no inertia)" << nl;
+    }
+    Info
         << "    line search: "
         << (
                !newton_.lineSearch ? "off"
@@ -786,9 +883,53 @@ Foam::formScene::formScene(Time& runTime)
     readSchedule();
     readSummary();
 
+    // Inertia: only for a dynamic analysis
+    if (integrator_)
+    {
+        const solidRegion& s = solids_[0];
+        if (!(s.density() > 0))
+        {
+            FatalIOErrorInFunction(s.properties())
+                << "Entry 'material/rho' (density) missing in "
+                << s.properties().name() << ": analysis dynamic in "
+                << solution_.name() << " needs it" << exit(FatalIOError);
+        }
+        solids_[0].model().setInertia
+        (
+            {{"material", s.density()}}, lumpedMass_
+        );
+    }
+
     if (steps_.startTime > 0 && solids_[0].readState(runTime.timeName()))
     {
         solids_[0].model().commit();
+        if (integrator_)
+        {
+            IOobject io
+            (
+                "feDynamics", runTime.timeName(), solids_[0].mesh(),
+                IOobject::MUST_READ, IOobject::NO_WRITE, false
+            );
+            if (!io.typeHeaderOk<IOField<scalar>>(true))
+            {
+                FatalErrorInFunction
+                    << "Restart of a dynamic analysis at time "
+                    << runTime.timeName() << ": " << io.objectPath()
+                    << " (velocities, accelerations) is missing"
+                    << exit(FatalError);
+            }
+            const IOField<scalar> f(io);
+            try
+            {
+                integrator_->setState(std::vector<double>(f.begin(), f.end()));
+            }
+            catch (const form::numericalError& err)
+            {
+                FatalErrorInFunction
+                    << io.objectPath() << ": " << err.what()
+                    << exit(FatalError);
+            }
+        }
         // Forces of the restored state (reactions, contact and tool
         // forces) for the first summary record
         form::vecX r;
@@ -796,6 +937,14 @@ Foam::formScene::formScene(Time& runTime)
         restarted_ = true;
         Info<< "Restarting from the state written at time "
             << runTime.timeName() << endl;
+    }
+    else if (integrator_)
+    {
+        // At rest; the initial acceleration balances the initial loads
+        integrator_->initialise
+        (
+            solids_[0].model(), steps_.startTime, form::vecX()
+        );
     }
 }
 
@@ -824,6 +973,21 @@ void Foam::formScene::run()
         runTime_.setTime(t, index);
         Info<< "    writing time " << runTime_.timeName() << endl;
         solid.write();
+        if (integrator_)
+        {
+            const std::vector<double> ds = integrator_->state();
+            IOField<scalar> f
+            (
+                IOobject
+                (
+                    "feDynamics", runTime_.timeName(), solid.mesh(),
+                    IOobject::NO_READ, IOobject::NO_WRITE, false
+                ),
+                scalarField(ds.size())
+            );
+            forAll(f, i) f[i] = ds[i];
+            f.write();
+        }
         if (contact_) contact_->write(runTime_.timeName(), t);
         solid.model().times().output += outClock.elapsedTime();
     };
@@ -861,6 +1025,7 @@ void Foam::formScene::run()
         (
             solid.model(), *linearSolver_, newton_, sc, std::cout
         );
+        solver.setIntegrator(integrator_.get());
 
         try
         {
@@ -885,6 +1050,7 @@ void Foam::formScene::run()
                         << "  elapsed " << elapsed << " s  ETA " << eta
                         << " s" << endl;
                     recordSummary(r.time, false);
+                    if (integrator_) writeEnergy(r.time);
 
                     const bool last = r.time >= ps.endTime - 1e-12;
                     bool doWrite = last;

@@ -86,6 +86,19 @@ void Foam::solidRegion::readMaterial(const dictionary& dict)
     }
     form::materialInput input;
     toMaterialInput(dict, input, "");
+    // The density belongs to the region (inertia), not to the
+    // constitutive law
+    if (dict.found("rho"))
+    {
+        density_ = dict.get<scalar>("rho");
+        if (!(density_ > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'rho' in " << dict.name() << " must be positive,"
+                << " got " << density_ << exit(FatalIOError);
+        }
+        input.scalars.erase("rho");
+    }
     try
     {
         material_ = form::material::New(materialType_, input);
