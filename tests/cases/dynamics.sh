@@ -10,7 +10,9 @@
 # integrators; energy conserved by the trapezoidal rule, dissipated (a
 # little) by the Bathe scheme, which also halves the overshoot of the
 # wall force (the unresolved front); lumped mass; restart reproduces the
-# continuous run; bad input.
+# continuous run; the same bar impacting a rigid wall (contact: force,
+# duration and rebound of the wave solution, no spurious contact-force
+# oscillation with the Bathe scheme); bad input.
 . "$(dirname "$0")/testFunctions"
 
 newCase()
@@ -127,7 +129,52 @@ else
 fi
 
 #------------------------------------------------------------------------------
-# 5. A static case builds no mass matrix (the scene says so)
+# 5. Elastic bar impacting a rigid wall (tests/cases/barImpact, contact +
+#    dynamics): the same bar (20 elements) flies at v0 = 1e-3 towards a
+#    wall 0.01 away. 1D wave solution: contact from t = 10 to 30 with the
+#    force rho c v0 A = 1e-3, the left end resting at the wall (u = -0.01),
+#    the right end stopping at t = 20 (u = -0.02) and both leaving with
+#    +v0 (back at u = 0 at t = 40).
+impactRun() { (cd "$1" && blockMesh -region bar > log.blockMesh 2>&1 && formFoam > log.formFoam 2>&1); }
+# plateauDeviation <case>: largest |f/1e-3 - 1| of the wall force over
+# t = 12..28 (history.dat, header "# time name...")
+plateauDeviation()
+{
+    awk 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "wallForce") c = i - 1; next }
+         !/^#/ && $1 >= 12 && $1 <= 28 { d = $c/1e-3 - 1; if (d < 0) d = -d; if (d > m) m = d }
+         END { printf "%.4g", m }' "$1/postProcessing/history.dat"
+}
+impact=$(newCase barImpact)
+if impactRun "$impact"; then
+    checkClose "impact, bathe: contact force at t = 20 = rho c v0 A" "$(summary "$impact" wallForceAt20)" 1e-3 0.03
+    checkBelow "impact, bathe: contact force over the plateau t = 12..28 within 10 %" "$(plateauDeviation "$impact")" 0.1
+    checkBelow "impact, bathe: no force before the impact (t = 9, relative)"         "$(awk -v f="$(summary "$impact" wallForceAt9)" 'BEGIN { print f/1e-3 }')" 1e-3
+    checkBelow "impact, bathe: no force after the separation (t = 32, relative)"         "$(awk -v f="$(summary "$impact" wallForceAt32)" 'BEGIN { print f/1e-3 }')" 1e-3
+    checkClose "impact, bathe: left end at the wall at t = 20" "$(summary "$impact" leftAt20)" -0.01 0.01
+    checkClose "impact, bathe: right end stopped at t = 20" "$(summary "$impact" rightAt20)" -0.02 0.03
+    checkBelow "impact, bathe: rebound with -v0 (|u_right(40)| / 0.02)"         "$(awk -v u="$(summary "$impact" rightAt40)" 'BEGIN { v = u/0.02; print v < 0 ? -v : v }')" 0.05
+    # The trapezoidal rule: the contact force rings (spurious, undamped)
+    trapImpact=$(newCase barImpact)
+    setEntry "$trapImpact" integrator trapezoidal
+    if impactRun "$trapImpact"; then
+        dT=$(plateauDeviation "$trapImpact")
+        dB=$(plateauDeviation "$impact")
+        if awk -v t="$dT" -v b="$dB" 'BEGIN { exit !(t > 0.5 && t > 5*b) }'; then
+            pass "impact: the trapezoidal contact force oscillates (plateau deviation $dT), the Bathe one does not ($dB)"
+        else
+            fail "impact: plateau deviation trapezoidal $dT, bathe $dB (expected > 0.5 and > 5 x bathe)"
+        fi
+    else
+        reportFailure "impact, trapezoidal run" "$trapImpact"
+    fi
+    rm -rf "$trapImpact"
+else
+    reportFailure "impact, bathe run" "$impact"
+fi
+rm -rf "$impact"
+
+#------------------------------------------------------------------------------
+# 6. A static case builds no mass matrix (the scene says so)
 static=$(newCase dynamicBar)
 setEntry "$static" analysis static
 sed -i '/^integrator/d; /^mass /d' "$static/system/solidSolution"
@@ -144,7 +191,7 @@ else
 fi
 
 #------------------------------------------------------------------------------
-# 6. Bad input
+# 7. Bad input
 bad=$(newCase dynamicBar)
 (cd "$bad" && blockMesh -region bar > log.blockMesh 2>&1)
 badRun() { (cd "$bad" && formFoam > log.formFoam 2>&1); }

@@ -27,7 +27,8 @@ void Foam::formScene::readSolution()
             "maxCutbacks", "maxIterations", "forceTolerance",
             "energyTolerance", "lineSearch", "lineSearchType", "predictor",
             "growthFactor",
-            "growthIterations", "summary", "integrator", "gamma", "mass"
+            "growthIterations", "summary", "integrator", "gamma", "mass",
+            "initialVelocity"
         }
     );
     const word analysis = d.getOrDefault<word>("analysis", "static");
@@ -40,7 +41,7 @@ void Foam::formScene::readSolution()
     dynamic_ = analysis == "dynamic";
     if (!dynamic_)
     {
-        for (const word key : {"integrator", "gamma", "mass"})
+        for (const word key : {"integrator", "gamma", "mass", "initialVelocity"})
         {
             if (d.found(key))
             {
@@ -61,6 +62,7 @@ void Foam::formScene::readSolution()
             << "'; valid: consistent lumped" << exit(FatalIOError);
     }
     lumpedMass_ = mass == "lumped";
+    initialVelocity_ = d.getOrDefault<vector>("initialVelocity", Zero);
     if (dynamic_)
     {
         try
@@ -940,11 +942,15 @@ Foam::formScene::formScene(Time& runTime)
     }
     else if (integrator_)
     {
-        // At rest; the initial acceleration balances the initial loads
-        integrator_->initialise
-        (
-            solids_[0].model(), steps_.startTime, form::vecX()
-        );
+        // At rest or with the initial velocity on the free dofs; the
+        // initial acceleration balances the initial loads
+        form::solidModel& m = solids_[0].model();
+        form::vecX V0 = form::vecX::Zero(m.nDofs());
+        for (const int dof : m.freeDofs())
+        {
+            V0(dof) = initialVelocity_[dof % m.nDim()];
+        }
+        integrator_->initialise(m, steps_.startTime, V0);
     }
 }
 
