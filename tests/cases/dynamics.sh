@@ -12,7 +12,8 @@
 # wall force (the unresolved front); lumped mass; restart reproduces the
 # continuous run; the same bar impacting a rigid wall (contact: force,
 # duration and rebound of the wave solution, no spurious contact-force
-# oscillation with the Bathe scheme); bad input.
+# oscillation with the Bathe scheme); friction work of a block sliding
+# under a push; bad input.
 . "$(dirname "$0")/testFunctions"
 
 newCase()
@@ -174,7 +175,38 @@ fi
 rm -rf "$impact"
 
 #------------------------------------------------------------------------------
-# 6. A static case builds no mass matrix (the scene says so)
+# 6. Friction work: the sliding block of contact.sh (2 x 1, rho = 1: mass
+#    m = 2 per unit depth) pressed with N = 200 on the ground (mu = 0.3)
+#    and pushed with P = 120 from t = 0, all dynamic (Bathe, steps of
+#    0.05): it slides with a = (P - mu N)/m = 30, so at t = 0.5 it has
+#    slid d = a t^2/2 = 3.75 with the kinetic energy m (a t)^2/2 = 225,
+#    and friction has done the work -mu N d = -225 on it; the normal
+#    contact force does none.
+slide=$(mktemp -d "${TMPDIR:-/tmp}/formFoamDynamics.XXXXXX")
+cp -r "$(dirname "$0")/slidingBlock/." "$slide/"
+rm "$slide/constant/processSchedule"
+sed -i 's/^\( *nu .*\)$/\1\n    rho         1;/' "$slide/constant/block/solidProperties"
+sed -i -e 's|^ *top .*|    top          { type traction; traction (0 -100 0); }|' \
+       -e 's|^ *left .*|    left         { type traction; traction (120 0 0); }|' "$slide/0/block/D"
+setEntry "$slide" analysis "dynamic;\nintegrator      bathe"
+sed -i 's/^endTime .*/endTime         0.5;/; s/^deltaT .*/deltaT          0.05;/; s/^writeInterval .*/writeInterval   0.25;/' \
+    "$slide/system/controlDict"
+if (cd "$slide" && blockMesh -region block > log.blockMesh 2>&1 && formFoam > log.formFoam 2>&1); then
+    read -r kin con fri < <(awk '!/^#/ { k = $2; c = $6; f = $7 } END { print k, c, f }' "$slide/postProcessing/energy.dat")
+    d=$(summary "$slide" slipRight)
+    checkClose "sliding (dynamic): friction force = mu N" "$(summary "$slide" frictionForce)" 60 1e-4
+    checkClose "sliding (dynamic): distance a t^2/2" "$d" 3.75 0.005
+    checkClose "sliding (dynamic): kinetic energy m (a t)^2/2" "$kin" 225 0.005
+    checkClose "sliding (dynamic): friction work = -mu N d" "$fri" "$(awk -v d="$d" 'BEGIN { print -60*d }')" 0.01
+    checkBelow "sliding (dynamic): work of the normal contact force / kinetic energy" \
+        "$(awk -v c="$con" -v f="$fri" -v k="$kin" 'BEGIN { w = (c - f)/k; print w < 0 ? -w : w }')" 1e-3
+else
+    reportFailure "dynamic sliding block" "$slide"
+fi
+rm -rf "$slide"
+
+#------------------------------------------------------------------------------
+# 7. A static case builds no mass matrix (the scene says so)
 static=$(newCase dynamicBar)
 setEntry "$static" analysis static
 sed -i '/^integrator/d; /^mass /d' "$static/system/solidSolution"
@@ -191,7 +223,7 @@ else
 fi
 
 #------------------------------------------------------------------------------
-# 7. Bad input
+# 8. Bad input
 bad=$(newCase dynamicBar)
 (cd "$bad" && blockMesh -region bar > log.blockMesh 2>&1)
 badRun() { (cd "$bad" && formFoam > log.formFoam 2>&1); }

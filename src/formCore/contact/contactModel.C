@@ -63,6 +63,9 @@ struct contactModel::impl
     std::vector<int> toolUnknown;
     std::vector<bool> toolReleased;
     std::vector<Eigen::Vector2d> toolForce;
+    //- Tangential (friction) part of the nodal contact forces at the last
+    //  evaluation, all nodal dofs (energy accounting)
+    vecX friction;
 
     vecX x;
     vecX xCommitted;
@@ -578,6 +581,17 @@ void contactModel::impl::evaluateDeformable
         F.head<2>() = f;
         for (int b = 0; b < m; ++b) F.segment<2>(2 + 2*b) = -P.N(b)*f;
         for (int i = 0; i < nq; ++i) fext(dof[i]) += F(i);
+        {
+            const Eigen::Vector2d ft = k*tau*tv;
+            vecX& fFriction = this->friction;
+            fFriction(dof[0]) += ft(0);
+            fFriction(dof[1]) += ft(1);
+            for (int b = 0; b < m; ++b)
+            {
+                fFriction(dof[2 + 2*b]) -= P.N(b)*ft(0);
+                fFriction(dof[3 + 2*b]) -= P.N(b)*ft(1);
+            }
+        }
         r(il) = k*c.w;
         updateStatus(p, a, lambda, P.gap, U, K != nullptr);
 
@@ -658,6 +672,12 @@ void contactModel::impl::evaluateDeformable
 }
 
 
+const vecX& contactModel::frictionForces() const
+{
+    return impl_->friction;
+}
+
+
 void contactModel::evaluate
 (
     double t,
@@ -676,6 +696,7 @@ void contactModel::evaluate
     m.tEvaluated = t;
     m.nClosed = 0;
     std::fill(m.toolForce.begin(), m.toolForce.end(), Eigen::Vector2d::Zero());
+    m.friction.setZero(fext.size());
 
     const auto add = [K](int i, int j, double v)
     {
@@ -735,6 +756,8 @@ void contactModel::evaluate
             const Eigen::Vector2d f = k*(lambda*n + tau*tv);
             fext(2*node) += f(0);
             fext(2*node + 1) += f(1);
+            m.friction(2*node) += k*tau*tv(0);
+            m.friction(2*node + 1) += k*tau*tv(1);
             m.toolForce[T] += f;
             r(il) = k*c.w;
 

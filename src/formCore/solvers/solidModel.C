@@ -109,6 +109,8 @@ struct solidModel::impl
     double alpha = 0;
     vecX accelerationOffset;
     vecX finertia;
+    //- Contact forces at the last evaluation (part of fext)
+    vecX fcontact;
 
     phaseTimes times;
 
@@ -829,10 +831,12 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
     const int nC = m.contact->nUnknowns();
     vecX rc;
     m.triplets.clear();
+    m.fcontact = -m.fext;
     m.contact->evaluate
     (
         t, m.U, m.fext, rc, wantTangent ? &m.triplets : nullptr
     );
+    m.fcontact += m.fext;
     residual.resize(nFree + nC);
     for (int k = 0; k < nFree; ++k)
     {
@@ -1213,6 +1217,23 @@ vecX solidModel::acceleration() const
 const vecX& solidModel::internalForce() const { return impl_->fint; }
 const vecX& solidModel::externalForce() const { return impl_->fext; }
 const vecX& solidModel::inertiaForce() const { return impl_->finertia; }
+
+const vecX& solidModel::contactForce() const
+{
+    impl& m = *impl_;
+    if (m.fcontact.size() != m.nDofs()) m.fcontact.setZero(m.nDofs());
+    return m.fcontact;
+}
+
+vecX solidModel::frictionForce() const
+{
+    const impl& m = *impl_;
+    if (m.contact && m.contact->frictionForces().size() == m.nDofs())
+    {
+        return m.contact->frictionForces();
+    }
+    return vecX::Zero(m.nDofs());
+}
 
 
 solidModel::savedState solidModel::save() const

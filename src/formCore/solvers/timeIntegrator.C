@@ -149,6 +149,8 @@ void timeIntegrator::initialise(solidModel& model, double t0, const vecX& V0)
     }
     fint_ = model.internalForce();
     fext_ = workForce(model);
+    fcon_ = model.contactForce();
+    ffri_ = model.frictionForce();
     energy_ = energyBalance();
     energy_.kinetic = 0.5*V_.dot(model.massMatrix()*V_);
     Um_ = U_;
@@ -228,20 +230,29 @@ void timeIntegrator::endStage
     const vecX& Uprev = stage == 0 ? U_ : Um_;
     const vecX& fiPrev = stage == 0 ? fint_ : fintNew_;
     const vecX& gPrev = stage == 0 ? fext_ : fextNew_;
+    const vecX& cPrev = stage == 0 ? fcon_ : fconNew_;
+    const vecX& tPrev = stage == 0 ? ffri_ : ffriNew_;
     const vecX g = workForce(model);
+    const vecX fc = model.contactForce();
+    const vecX ft = model.frictionForce();
     const vecX dU = U - Uprev;
     const double dWint = 0.5*(fiPrev + model.internalForce()).dot(dU);
     const double dWext = 0.5*(gPrev + g).dot(dU);
+    const double dWcon = 0.5*(cPrev + fc).dot(dU);
+    const double dWfri = 0.5*(tPrev + ft).dot(dU);
     if (stage == 0)
     {
-        pendingInternal_ = dWint;
-        pendingExternal_ = dWext;
+        pendingInternal_ = 0;
+        pendingExternal_ = 0;
+        pendingContact_ = 0;
+        pendingFriction_ = 0;
     }
-    else
-    {
-        pendingInternal_ += dWint;
-        pendingExternal_ += dWext;
-    }
+    pendingInternal_ += dWint;
+    pendingExternal_ += dWext;
+    pendingContact_ += dWcon;
+    pendingFriction_ += dWfri;
+    fconNew_ = fc;
+    ffriNew_ = ft;
 
     Unew_ = U;
     Vnew_ = v;
@@ -267,6 +278,10 @@ void timeIntegrator::commitStep()
     energy_.kinetic = pendingKinetic_;
     energy_.internalWork += pendingInternal_;
     energy_.externalWork += pendingExternal_;
+    energy_.contactWork += pendingContact_;
+    energy_.frictionWork += pendingFriction_;
+    fcon_ = fconNew_;
+    ffri_ = ffriNew_;
     Um_ = U_;
     Vm_ = V_;
 }
@@ -282,30 +297,36 @@ void timeIntegrator::revertStep()
 std::vector<double> timeIntegrator::state() const
 {
     std::vector<double> s;
-    for (const vecX* v : {&U_, &V_, &A_, &fint_, &fext_})
+    for (const vecX* v : {&U_, &V_, &A_, &fint_, &fext_, &fcon_, &ffri_})
     {
         s.insert(s.end(), v->data(), v->data() + v->size());
     }
-    s.push_back(energy_.kinetic);
-    s.push_back(energy_.internalWork);
-    s.push_back(energy_.externalWork);
+    s.insert
+    (
+        s.end(),
+        {
+            energy_.kinetic, energy_.internalWork, energy_.externalWork,
+            energy_.contactWork, energy_.frictionWork
+        }
+    );
     return s;
 }
 
 
 void timeIntegrator::setState(const std::vector<double>& s)
 {
-    if (s.size() < 3 || (s.size() - 3) % 5)
+    constexpr int nVectors = 7, nEnergies = 5;
+    if (s.size() < nEnergies || (s.size() - nEnergies) % nVectors)
     {
         throw numericalError
         (
             "timeIntegrator::setState: " + std::to_string(s.size())
-          + " values, not 5 nodal vectors and 3 energies"
+          + " values, not 7 nodal vectors and 5 energies"
         );
     }
-    const int n = int((s.size() - 3)/5);
+    const int n = int((s.size() - nEnergies)/nVectors);
     int i = 0;
-    for (vecX* v : {&U_, &V_, &A_, &fint_, &fext_})
+    for (vecX* v : {&U_, &V_, &A_, &fint_, &fext_, &fcon_, &ffri_})
     {
         *v = Eigen::Map<const vecX>(s.data() + i, n);
         i += n;
@@ -313,6 +334,8 @@ void timeIntegrator::setState(const std::vector<double>& s)
     energy_.kinetic = s[i];
     energy_.internalWork = s[i + 1];
     energy_.externalWork = s[i + 2];
+    energy_.contactWork = s[i + 3];
+    energy_.frictionWork = s[i + 4];
     Um_ = U_;
     Vm_ = V_;
 }

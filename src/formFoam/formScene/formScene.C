@@ -143,8 +143,13 @@ void Foam::formScene::writeEnergy(scalar time)
     const form::energyBalance& e = integrator_->energy();
     const scalar level = max(e.externalWork, e.kinetic + e.internalWork);
     Info<< "    energy: kinetic " << e.kinetic << ", internal work "
-        << e.internalWork << ", external work " << e.externalWork
-        << ", dissipated by the scheme " << e.dissipated();
+        << e.internalWork << ", external work " << e.externalWork;
+    if (contact_)
+    {
+        Info<< " (contact " << e.contactWork << ", friction "
+            << e.frictionWork << ")";
+    }
+    Info<< ", dissipated by the scheme " << e.dissipated();
     if (level > 0) Info<< " (" << e.dissipated()/level << ")";
     Info<< endl;
     if (!energyFile_)
@@ -174,7 +179,7 @@ void Foam::formScene::writeEnergy(scalar time)
         {
             (*energyFile_)
                 << "# time kinetic internalWork externalWork dissipated"
-                << nl;
+                << " contactWork frictionWork" << nl;
         }
         for (const std::string& line : kept)
         {
@@ -183,7 +188,8 @@ void Foam::formScene::writeEnergy(scalar time)
     }
     (*energyFile_)
         << time << ' ' << e.kinetic << ' ' << e.internalWork << ' '
-        << e.externalWork << ' ' << e.dissipated() << endl;
+        << e.externalWork << ' ' << e.dissipated() << ' ' << e.contactWork
+        << ' ' << e.frictionWork << endl;
 }
 
 
@@ -280,9 +286,28 @@ void Foam::formScene::readSchedule()
             d,
             {
                 "endTime", "deltaT", "maxDeltaT", "release", "hold", "pin",
-                "prescribe", "releaseTools"
+                "prescribe", "releaseTools", "analysis"
             }
         );
+        if (d.found("analysis"))
+        {
+            const word a = d.get<word>("analysis");
+            if (!wordList{"static", "dynamic"}.found(a))
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry 'analysis' of process step '" << e.keyword()
+                    << "' in " << d.name() << ": unknown '" << a
+                    << "'; valid: static dynamic" << exit(FatalIOError);
+            }
+            if (a == "dynamic" && !dynamic_)
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry 'analysis' of process step '" << e.keyword()
+                    << "' in " << d.name() << ": a dynamic step needs"
+                    << " analysis dynamic in system/solidSolution (the"
+                    << " scene's inertia)" << exit(FatalIOError);
+            }
+        }
         processStep ps;
         ps.name = e.keyword();
         ps.startTime = t0;
@@ -1003,6 +1028,10 @@ void Foam::formScene::run()
     const bool replayed = restarted_ && replayHistory(steps_.startTime);
     recordSummary(steps_.startTime, !replayed);
 
+    // The state at the start (or the restart) is dynamic if the step that
+    // contains it is (the integrator was initialised or restored)
+    bool previousDynamic = bool(integrator_);
+    bool first = true;
     for (const processStep& ps : schedule_)
     {
         // Steps that ended before a restart time were run before it
@@ -1010,6 +1039,29 @@ void Foam::formScene::run()
         {
             applyActions(ps);
             continue;
+        }
+        if (first)
+        {
+            // A restart exactly at the start of a dynamic step that
+            // follows a static one: the written velocities are those of an
+            // earlier dynamic step, so it starts at rest
+            first = false;
+            const processStep* before = nullptr;
+            for (const processStep& q : schedule_)
+            {
+                if (&q == &ps) break;
+                before = &q;
+            }
+            if
+            (
+                restarted_ && before
+             && ps.startTime >= steps_.startTime - 1e-12
+             && before->actions.getOrDefault<word>("analysis", "dynamic")
+             == "static"
+            )
+            {
+                previousDynamic = false;
+            }
         }
         if (schedule_.size() > 1)
         {
@@ -1019,6 +1071,32 @@ void Foam::formScene::run()
         }
         applyActions(ps);
         if (schedule_.size() > 1) Info<< endl;
+
+        // A dynamic scene may run single process steps statically (e.g.
+        // springback); a dynamic step after a static one starts at rest
+        const bool stepDynamic =
+            integrator_
+         && ps.actions.getOrDefault<word>("analysis", "dynamic") == "dynamic";
+        if (stepDynamic && !previousDynamic)
+        {
+            Info<< "    dynamic analysis from rest at t = "
+                << max(ps.startTime, steps_.startTime) << endl;
+            integrator_->initialise
+            (
+                solid.model(), max(ps.startTime, steps_.startTime),
+                form::vecX()
+            );
+        }
+        if (integrator_ && !stepDynamic)
+        {
+            // Inertia off: a(U) = 0
+            solid.model().setAccelerationLaw
+            (
+                0, form::vecX::Zero(solid.model().nDofs())
+            );
+            Info<< "    static analysis (no inertia) in this step" << endl;
+        }
+        previousDynamic = stepDynamic;
 
         const scalar stepClockStart = clock.elapsedTime();
         form::stepControls sc = steps_;
@@ -1031,7 +1109,7 @@ void Foam::formScene::run()
         (
             solid.model(), *linearSolver_, newton_, sc, std::cout
         );
-        solver.setIntegrator(integrator_.get());
+        solver.setIntegrator(stepDynamic ? integrator_.get() : nullptr);
 
         try
         {
@@ -1056,7 +1134,7 @@ void Foam::formScene::run()
                         << "  elapsed " << elapsed << " s  ETA " << eta
                         << " s" << endl;
                     recordSummary(r.time, false);
-                    if (integrator_) writeEnergy(r.time);
+                    if (stepDynamic) writeEnergy(r.time);
 
                     const bool last = r.time >= ps.endTime - 1e-12;
                     bool doWrite = last;
