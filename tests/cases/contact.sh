@@ -464,6 +464,16 @@ keepOrRemove "$c"
 sD=$(awk 'BEGIN { printf "%.12g", 200000/(1 - 0.3^2)*0.01/7 }')
 pD=$(awk -v s="$sD" 'BEGIN { printf "%.12g", s/(1 + 0.3/(1 - 0.3)*0.01/7) }')
 FD=$(awk -v s="$sD" 'BEGIN { printf "%.12g", 10*s }')
+# punchForceChecks <label> <punch force> <bottom force> <tolerance> <Newton
+# iterations> <steps>: force against the exact one, equilibrium, Newton
+# iterations per step at most 6
+punchForceChecks()
+{
+    checkClose "elastic punch ($1): punch reaction vs E/(1 - nu^2) 0.01/7 x 10" "$2" "$FD" "$4"
+    checkClose "elastic punch ($1): punch reaction vs bottom reaction (equilibrium)" "$2" "$3" 1e-8
+    checkBelow "elastic punch ($1): Newton iterations per step" \
+        "$(awk -v i="$5" -v s="$6" 'BEGIN { printf "%.3g", i/s }')" 6.01
+}
 # deformablePunch <nPunch> <pressure tolerance> <force tolerance> <label>
 deformablePunch()
 {
@@ -487,10 +497,7 @@ deformablePunch()
         [ "$nClosed" = "$n" ] && pass "elastic punch ($label, $np): all $n contactor nodes closed" \
             || fail "elastic punch ($label, $np): $nClosed of $n contactor nodes closed"
         checkBelow "elastic punch ($label, $np): max |p - p_exact|/p_exact" "$dev" "$ptol"
-        checkClose "elastic punch ($label, $np): punch reaction vs E/(1 - nu^2) 0.01/7 x 10" "$F" "$FD" "$ftol"
-        checkClose "elastic punch ($label, $np): punch reaction vs bottom reaction (equilibrium)" "$F" "$Fb" 1e-8
-        checkBelow "elastic punch ($label, $np): Newton iterations per step" \
-            "$(awk -v i="$its" -v s="$steps" 'BEGIN { printf "%.3g", i/s }')" 6.01
+        punchForceChecks "$label, $np" "$F" "$Fb" "$ftol" "$its" "$steps"
     else
         reportFailure "elastic punch run ($label, $np)" "$c"
     fi
@@ -522,10 +529,7 @@ twoPass()
         steps=$(summary "$c" steps)
         echo "    elastic punch, two-pass ($np punch / 8 block elements): force $F (exact $FD)," \
              "Newton $its iterations in $steps steps"
-        checkClose "elastic punch (two-pass, $np): punch reaction vs E/(1 - nu^2) 0.01/7 x 10" "$F" "$FD" 0.002
-        checkClose "elastic punch (two-pass, $np): punch reaction vs bottom reaction (equilibrium)" "$F" "$Fb" 1e-8
-        checkBelow "elastic punch (two-pass, $np): Newton iterations per step" \
-            "$(awk -v i="$its" -v s="$steps" 'BEGIN { printf "%.3g", i/s }')" 6.01
+        punchForceChecks "two-pass, $np" "$F" "$Fb" 0.002 "$its" "$steps"
     else
         reportFailure "elastic punch run (two-pass, $np)" "$c"
     fi

@@ -37,14 +37,26 @@ energyLast() { awk -v f="$2" '!/^#/ { last = $0; if ($4 > m) m = $4 }
 
 us=0.01
 s=1e-3
+# passIf <awk condition> <pass message> <fail message> <awk -v options...>
+passIf()
+{
+    local cond=$1 ok=$2 bad=$3
+    shift 3
+    if awk "$@" "BEGIN { exit !($cond) }"; then pass "$ok"; else fail "$bad"; fi
+}
+# tipChecks <label> <case>: the tip at t = L/c and its largest displacement
+tipChecks()
+{
+    checkClose "$1: tip at t = L/c = u_s" "$(summary "$2" tipAt10)" "$us" 0.01
+    checkClose "$1: largest tip displacement = 2 u_s" "$(summary "$2" tipMax)" \
+        "$(awk -v u="$us" 'BEGIN { print 2*u }')" 0.02
+}
 
 #------------------------------------------------------------------------------
 # 1. Trapezoidal rule, consistent mass
 trap=$(newCase dynamicBar)
 if run "$trap"; then
-    checkClose "trapezoidal: tip at t = L/c = u_s" "$(summary "$trap" tipAt10)" "$us" 0.01
-    checkClose "trapezoidal: largest tip displacement = 2 u_s" "$(summary "$trap" tipMax)" \
-        "$(awk -v u="$us" 'BEGIN { print 2*u }')" 0.02
+    tipChecks trapezoidal "$trap"
     checkBelow "trapezoidal: tip back at rest at t = 4 L/c (|u|/2 u_s)" \
         "$(awk -v u="$(summary "$trap" tipAt40)" -v s="$us" 'BEGIN { v = u/(2*s); print v < 0 ? -v : v }')" 0.03
     checkBelow "trapezoidal: energy conserved (|dissipated| / largest external work)" \
@@ -65,24 +77,19 @@ fi
 bathe=$(newCase dynamicBar)
 setEntry "$bathe" integrator bathe
 if run "$bathe"; then
-    checkClose "bathe: tip at t = L/c = u_s" "$(summary "$bathe" tipAt10)" "$us" 0.01
-    checkClose "bathe: largest tip displacement = 2 u_s" "$(summary "$bathe" tipMax)" \
-        "$(awk -v u="$us" 'BEGIN { print 2*u }')" 0.02
+    tipChecks bathe "$bathe"
     d=$(energyLast "$bathe" relDissipated)
-    if awk -v d="$d" 'BEGIN { exit !(d > 1e-4 && d < 0.02) }'; then
-        pass "bathe: dissipates a little energy (the unresolved front): $d of the largest external work"
-    else
-        fail "bathe: dissipated energy $d of the largest external work, expected in (1e-4, 0.02)"
-    fi
+    passIf 'd > 1e-4 && d < 0.02' \
+        "bathe: dissipates a little energy (the unresolved front): $d of the largest external work" \
+        "bathe: dissipated energy $d of the largest external work, expected in (1e-4, 0.02)" -v d="$d"
     # Wall reaction: exact 2 s after the reflection; the overshoot is the
     # spurious ringing of the sharp front
     oT=$(awk -v f="$(summary "$trap" wallForceMin)" -v s="$s" 'BEGIN { print -f/(2*s) - 1 }')
     oB=$(awk -v f="$(summary "$bathe" wallForceMin)" -v s="$s" 'BEGIN { print -f/(2*s) - 1 }')
-    if awk -v a="$oT" -v b="$oB" 'BEGIN { exit !(b >= 0 && b < 0.6*a && a < 0.3) }'; then
-        pass "wall force overshoot: trapezoidal $oT, bathe $oB (less than 0.6 x)"
-    else
-        fail "wall force overshoot: trapezoidal $oT, bathe $oB (expected bathe < 0.6 x trapezoidal)"
-    fi
+    passIf 'b >= 0 && b < 0.6*a && a < 0.3' \
+        "wall force overshoot: trapezoidal $oT, bathe $oB (less than 0.6 x)" \
+        "wall force overshoot: trapezoidal $oT, bathe $oB (expected bathe < 0.6 x trapezoidal)" \
+        -v a="$oT" -v b="$oB"
     checkClose "bathe: two Newton iterations per step (one per stage)" \
         "$(summary "$bathe" newtonIterationsPerStep)" 2 1e-12
 else
@@ -160,11 +167,10 @@ if impactRun "$impact"; then
     if impactRun "$trapImpact"; then
         dT=$(plateauDeviation "$trapImpact")
         dB=$(plateauDeviation "$impact")
-        if awk -v t="$dT" -v b="$dB" 'BEGIN { exit !(t > 0.5 && t > 5*b) }'; then
-            pass "impact: the trapezoidal contact force oscillates (plateau deviation $dT), the Bathe one does not ($dB)"
-        else
-            fail "impact: plateau deviation trapezoidal $dT, bathe $dB (expected > 0.5 and > 5 x bathe)"
-        fi
+        passIf 't > 0.5 && t > 5*b' \
+            "impact: the trapezoidal contact force oscillates (plateau deviation $dT), the Bathe one does not ($dB)" \
+            "impact: plateau deviation trapezoidal $dT, bathe $dB (expected > 0.5 and > 5 x bathe)" \
+            -v t="$dT" -v b="$dB"
     else
         reportFailure "impact, trapezoidal run" "$trapImpact"
     fi
