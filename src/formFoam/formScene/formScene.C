@@ -3,6 +3,7 @@
 #include "regionProperties.H"
 #include "OFstream.H"
 #include "IOField.H"
+#include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "clockTime.H"
 #include "autoSolver.H"
@@ -500,7 +501,7 @@ void Foam::formScene::readSummary()
         }
         else if (type == "rotation")
         {
-            keys.append(word("patch"));
+            keys.append(wordList{"patch", "positive"});
         }
         else if (type == "bendingRadius")
         {
@@ -512,6 +513,37 @@ void Foam::formScene::readSummary()
         )
         {
             keys.append(wordList{"tool", "component"});
+        }
+        else if (type == "extent")
+        {
+            keys.append(wordList{"patch", "component", "extreme"});
+            const word x = ed.getOrDefault<word>("extreme", "max");
+            if (!wordList{"max", "min"}.found(x))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'extreme' in " << ed.name() << ": unknown '"
+                    << x << "'; valid: max min" << exit(FatalIOError);
+            }
+        }
+        else if (type == "difference")
+        {
+            keys.append(word("of"));
+            const wordList of = ed.get<wordList>("of");
+            for (const word& n : of)
+            {
+                const bool earlier = std::any_of
+                (
+                    summary_.begin(), summary_.end(),
+                    [&](const summaryEntry& o) { return o.name == n; }
+                );
+                if (!earlier || of.size() != 2)
+                {
+                    FatalIOErrorInFunction(ed)
+                        << "Entry 'of' in " << ed.name() << ": needs two"
+                        << " summary entries listed before '" << e.keyword()
+                        << "' (got " << of << ")" << exit(FatalIOError);
+                }
+            }
         }
         else if (type == "uChannelSpringback")
         {
@@ -530,7 +562,8 @@ void Foam::formScene::readSummary()
             FatalIOErrorInFunction(ed)
                 << "Unknown summary type '" << type << "' in " << ed.name()
                 << nl << "    Valid types: displacement position reaction"
-                << " circleRadius rotation bendingRadius uChannelSpringback"
+                << " circleRadius rotation bendingRadius extent difference"
+                << " uChannelSpringback"
                 << (contact_ ? " toolForce toolPosition" : "")
                 << exit(FatalIOError);
         }
@@ -576,6 +609,41 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
     else if (type == "rotation")
     {
         value = s.patchRotation(ed.get<word>("patch"), ed);
+        // positive: in [0, 2 pi) instead of (-pi, pi] (a hem turns its
+        // flange by about pi)
+        if (ed.getOrDefault<bool>("positive", false) && value < 0)
+        {
+            value += constant::mathematical::twoPi;
+        }
+    }
+    else if (type == "extent")
+    {
+        // Largest (smallest) current coordinate of a patch's nodes
+        const Eigen::MatrixXd P =
+            s.patchPoints(ed.get<word>("patch"), ed, true);
+        const Eigen::VectorXd c =
+            P.col(planeComponent(ed.get<word>("component"), ed));
+        value =
+            ed.getOrDefault<word>("extreme", "max") == "max"
+          ? c.maxCoeff() : c.minCoeff();
+    }
+    else if (type == "difference")
+    {
+        // The reported values (after their statistic or time) of two
+        // entries listed before this one
+        const wordList of = ed.get<wordList>("of");
+        scalar v[2] = {0, 0};
+        for (label i = 0; i < 2; ++i)
+        {
+            for (const summaryEntry& o : summary_)
+            {
+                if (o.name == of[i])
+                {
+                    v[i] = o.set ? o.value : NAN;
+                }
+            }
+        }
+        value = v[0] - v[1];
     }
     else if (type == "bendingRadius")
     {
@@ -809,6 +877,7 @@ void Foam::formScene::writeSummary
             "newtonIterationsPerStep",
             scalar(newtonIterations)/max(label(1), nSteps)
         );
+        os.writeEntry("maxIterationsInAStep", maxStepIterations_);
         os.writeEntry("cutbacks", cutbacks);
         for (const auto& sw : stepWallTimes_)
         {
@@ -1119,6 +1188,7 @@ void Foam::formScene::run()
                 {
                     ++nSteps;
                     nCutbacks += r.cutbacks;
+                    maxStepIterations_ = max(maxStepIterations_, r.iterations);
                     lastTime = r.time;
                     const scalar frac =
                         (r.time - steps_.startTime)
