@@ -96,6 +96,19 @@ else
     reportFailure "bathe run" "$bathe"
 fi
 
+# 2b. The shorthand 'analysis bathe' (dynamic with the Bathe scheme) runs
+#     the same analysis
+short=$(newCase dynamicBar)
+sed -i '/^integrator/d' "$short/system/solidSolution"
+setEntry "$short" analysis bathe
+if run "$short"; then
+    checkClose "analysis bathe (shorthand) = analysis dynamic + integrator bathe" \
+        "$(summary "$short" tipMax)" "$(summary "$bathe" tipMax)" 1e-12
+else
+    reportFailure "analysis bathe run" "$short"
+fi
+rm -rf "$short"
+
 #------------------------------------------------------------------------------
 # 3. Lumped mass (trapezoidal)
 lumped=$(newCase dynamicBar)
@@ -258,5 +271,10 @@ cp "$bad/solidSolution.orig" "$bad/system/solidSolution"
 
 setEntry "$bad" mass diagonal
 badRun; expectFailure "unknown mass matrix" $? "$bad/log.formFoam" "Entry 'mass' in .*solidSolution.?: unknown 'diagonal'; valid: consistent lumped"
+cp "$bad/solidSolution.orig" "$bad/system/solidSolution"
+
+setEntry "$bad" analysis trapezoidal
+badRun; expectFailure "analysis trapezoidal together with an integrator entry" $? "$bad/log.formFoam" \
+    "Entries 'analysis trapezoidal' and 'integrator' in .*solidSolution.?: give either"
 
 rm -rf "$trap" "$bathe" "$lumped" "$static" "$bad"

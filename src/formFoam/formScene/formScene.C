@@ -33,13 +33,25 @@ void Foam::formScene::readSolution()
         }
     );
     const word analysis = d.getOrDefault<word>("analysis", "static");
-    if (!wordList{"static", "dynamic"}.found(analysis))
+    if (!wordList{"static", "dynamic", "trapezoidal", "bathe"}.found(analysis))
     {
         FatalIOErrorInFunction(d)
             << "Entry 'analysis' in " << d.name() << ": unknown '"
-            << analysis << "'; valid: static dynamic" << exit(FatalIOError);
+            << analysis << "'; valid: static dynamic trapezoidal bathe"
+            << exit(FatalIOError);
     }
-    dynamic_ = analysis == "dynamic";
+    // analysis trapezoidal | bathe: short for analysis dynamic with that
+    // integrator
+    const bool shorthand = analysis == "trapezoidal" || analysis == "bathe";
+    if (shorthand && d.found("integrator"))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entries 'analysis " << analysis << "' and 'integrator' in "
+            << d.name() << ": give either analysis dynamic with an"
+            << " integrator, or analysis " << analysis << " alone"
+            << exit(FatalIOError);
+    }
+    dynamic_ = analysis == "dynamic" || shorthand;
     if (!dynamic_)
     {
         for (const word key : {"integrator", "gamma", "mass", "initialVelocity"})
@@ -53,7 +65,8 @@ void Foam::formScene::readSolution()
             }
         }
     }
-    integratorName_ = d.getOrDefault<word>("integrator", "bathe");
+    integratorName_ =
+        shorthand ? analysis : d.getOrDefault<word>("integrator", "bathe");
     gamma_ = d.getOrDefault<scalar>("gamma", 0.5);
     const word mass = d.getOrDefault<word>("mass", "consistent");
     if (!wordList{"consistent", "lumped"}.found(mass))
