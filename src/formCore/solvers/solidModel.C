@@ -300,6 +300,7 @@ void solidModel::impl::build()
     for (auto& l : pressures) l.faces = locateFaces(l.faceSet);
 
     fint = vecX::Zero(n);
+    fcontact = vecX::Zero(n);
     fext = vecX::Zero(n);
     finalised = true;
     ++revision;
@@ -1218,12 +1219,7 @@ const vecX& solidModel::internalForce() const { return impl_->fint; }
 const vecX& solidModel::externalForce() const { return impl_->fext; }
 const vecX& solidModel::inertiaForce() const { return impl_->finertia; }
 
-const vecX& solidModel::contactForce() const
-{
-    impl& m = *impl_;
-    if (m.fcontact.size() != m.nDofs()) m.fcontact.setZero(m.nDofs());
-    return m.fcontact;
-}
+const vecX& solidModel::contactForce() const { return impl_->fcontact; }
 
 vecX solidModel::frictionForce() const
 {

@@ -152,6 +152,22 @@ void Foam::formScene::readSolution()
 }
 
 
+void Foam::formScene::initialiseDynamics(scalar t0, const form::vecX& V0)
+{
+    try
+    {
+        integrator_->initialise(solids_[0].model(), t0, V0);
+    }
+    catch (const form::numericalError& err)
+    {
+        FatalErrorInFunction
+            << "Dynamic analysis (" << solution_.name() << "): the initial"
+            << " state at t = " << t0 << " cannot start the integrator: "
+            << err.what() << exit(FatalError);
+    }
+}
+
+
 void Foam::formScene::writeEnergy(scalar time)
 {
     const form::energyBalance& e = integrator_->energy();
@@ -1057,7 +1073,7 @@ Foam::formScene::formScene(Time& runTime)
         {
             V0(dof) = initialVelocity_[dof % m.nDim()];
         }
-        integrator_->initialise(m, steps_.startTime, V0);
+        initialiseDynamics(steps_.startTime, V0);
     }
 }
 
@@ -1163,10 +1179,9 @@ void Foam::formScene::run()
         {
             Info<< "    dynamic analysis from rest at t = "
                 << max(ps.startTime, steps_.startTime) << endl;
-            integrator_->initialise
+            initialiseDynamics
             (
-                solid.model(), max(ps.startTime, steps_.startTime),
-                form::vecX()
+                max(ps.startTime, steps_.startTime), form::vecX()
             );
         }
         if (integrator_ && !stepDynamic)
