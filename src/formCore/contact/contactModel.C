@@ -48,8 +48,11 @@ struct contactModel::impl
         int first = 0;          //!< index of the first unknown
         int perNode = 1;        //!< 1 (frictionless) or 2
         std::vector<double> xiCommitted;
-        //- Slip of the last committed step (output)
+        //- Slip of the last committed step (output; the previous stage
+        //  of a multi-stage slip-rate law)
         std::vector<double> lastSlip;
+        //- Slip rate of the friction law at the last evaluation (output)
+        std::vector<double> rate;
         std::vector<int> status;   //!< 1 closed, 0 open, -1 unknown
         //- Deformable target: each node's edge at the last iteration
         std::vector<int> edge;
@@ -73,6 +76,9 @@ struct contactModel::impl
     //  on deformable targets)
     vecX Ucommitted;
     bool xiInitialised = false;
+    //- Slip-rate law s = (A slip + B lastSlip)/deltaT (setSlipRateLaw)
+    double rateA = 1;
+    double rateB = 0;
     double tEvaluated = 0;
     double tCommitted = 0;
     int nClosed = 0;
@@ -305,6 +311,7 @@ contactModel::contactModel
         nUnknowns += p.perNode*int(p.nodes.size());
         p.xiCommitted.assign(p.nodes.size(), 0);
         p.lastSlip.assign(p.nodes.size(), 0);
+        p.rate.assign(p.nodes.size(), 0);
         p.status.assign(p.nodes.size(), -1);
         p.edge.assign(p.nodes.size(), -1);
         p.flips.assign(p.nodes.size(), 0);
@@ -611,12 +618,13 @@ void contactModel::impl::evaluateDeformable
                 dTarget += P.dN(b)*dxb;
             }
             const double slip = tv.dot(delta);
+            p.rate[a] = (rateA*slip + rateB*p.lastSlip[a])/dt;
             fc = frictionConstraintFunction
             (
-                slip/dt, tau, lambda, p.mu,
+                p.rate[a], tau, lambda, p.mu,
                 epsT > 0 ? epsT : std::pow(1e-4*spacing, 2)
             );
-            fc.dvds /= dt;
+            fc.dvds *= rateA/dt;
             r(it) = k*fc.v;
             if (K)
             {
@@ -763,18 +771,22 @@ void contactModel::evaluate
 
             m.updateStatus(p, a, lambda, P.gap, U, K != nullptr);
 
-            // Slip rate over the step (backward Euler velocity), so that
-            // the friction law does not depend on the step size
+            // Slip rate over the step (a velocity, so that the friction
+            // law does not depend on the step size; setSlipRateLaw)
             frictionConstraint fc;
             if (p.perNode == 2)
             {
-                const double rate = (P.xi - p.xiCommitted[a])/dt;
+                p.rate[a] =
+                    (
+                        m.rateA*(P.xi - p.xiCommitted[a])
+                      + m.rateB*p.lastSlip[a]
+                    )/dt;
                 fc = frictionConstraintFunction
                 (
-                    rate, tau, lambda, p.mu,
+                    p.rate[a], tau, lambda, p.mu,
                     m.epsT > 0 ? m.epsT : std::pow(1e-4*m.spacing, 2)
                 );
-                fc.dvds /= dt;
+                fc.dvds *= m.rateA/dt;
                 r(it) = k*fc.v;
             }
             if (!K) continue;
@@ -878,6 +890,21 @@ void contactModel::commit(const vecX& U)
         }
     }
     m.Ucommitted = U;
+}
+
+
+void contactModel::setSlipRateLaw(double current, double previous)
+{
+    if (!(current > 0) || !std::isfinite(previous))
+    {
+        throw numericalError
+        (
+            "contactModel::setSlipRateLaw: the weight of the current slip"
+            " must be positive, got " + std::to_string(current)
+        );
+    }
+    impl_->rateA = current;
+    impl_->rateB = previous;
 }
 
 
@@ -1009,6 +1036,7 @@ std::vector<contactNodeResult> contactModel::pairResults
             res.gap =
                 P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
             res.slip = p.lastSlip[a];
+            res.slipRate = p.rate[a];
             res.closed = P.onTarget && lambda > P.gap;
             results.push_back(res);
             continue;
@@ -1021,6 +1049,7 @@ std::vector<contactNodeResult> contactModel::pairResults
         res.slip =
             std::abs(P.xi - p.xiCommitted[a]) > 0
           ? P.xi - p.xiCommitted[a] : p.lastSlip[a];
+        res.slipRate = p.rate[a];
         res.closed = lambda > P.gap;
         results.push_back(res);
     }

@@ -7,6 +7,7 @@ Description
 \*---------------------------------------------------------------------------*/
 #include "timeIntegrator.H"
 #include "solidModel.H"
+#include "contactModel.H"
 #include "formError.H"
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -153,6 +154,7 @@ void timeIntegrator::initialise(solidModel& model, double t0, const vecX& V0)
     ffri_ = model.frictionForce();
     energy_ = energyBalance();
     energy_.kinetic = 0.5*V_.dot(model.massMatrix()*V_);
+    energy_.initialKinetic = energy_.kinetic;
     Um_ = U_;
     Vm_ = V_;
 }
@@ -181,9 +183,13 @@ void timeIntegrator::beginStage
         );
     }
     const double h = t1 - t0;
+    contactModel* contact = model.contact();
     if (stage == 0)
     {
         trapezoidalLaw(stageEnd(0, t0, t1) - t0, model);
+        // Slip rates: the mean velocity over the (sub-)step, the one the
+        // trapezoidal displacement update uses (contactModel.H)
+        if (contact) contact->setSlipRateLaw(1, 0);
         return;
     }
     // Bathe, three-point Euler backward over the whole step
@@ -196,6 +202,9 @@ void timeIntegrator::beginStage
         c3*c3,
         c1*V_ + c2*Vm_ + c3*(c1*U_ + c2*Um_)
     );
+    // Slip rates by the same formula, c3 (xi - xi_m) - c1 (xi_m - xi_t),
+    // scaled by the stage length (1 - gamma) h (contactModel.H)
+    if (contact) contact->setSlipRateLaw(2 - g, -(1 - g)*(1 - g)/g);
 }
 
 
@@ -306,7 +315,8 @@ std::vector<double> timeIntegrator::state() const
         s.end(),
         {
             energy_.kinetic, energy_.internalWork, energy_.externalWork,
-            energy_.contactWork, energy_.frictionWork
+            energy_.contactWork, energy_.frictionWork,
+            energy_.initialKinetic
         }
     );
     return s;
@@ -315,13 +325,17 @@ std::vector<double> timeIntegrator::state() const
 
 void timeIntegrator::setState(const std::vector<double>& s)
 {
-    constexpr int nVectors = 7, nEnergies = 5;
-    if (s.size() < nEnergies || (s.size() - nEnergies) % nVectors)
+    // 7 nodal vectors and 6 energies (5 in restart files written before
+    // the initial kinetic energy was kept: the two sizes differ mod 7)
+    constexpr int nVectors = 7;
+    const int nEnergies =
+        s.size() >= 6 && (s.size() - 6) % nVectors == 0 ? 6 : 5;
+    if (s.size() < std::size_t(nEnergies) || (s.size() - nEnergies) % nVectors)
     {
         throw numericalError
         (
             "timeIntegrator::setState: " + std::to_string(s.size())
-          + " values, not 7 nodal vectors and 5 energies"
+          + " values, not 7 nodal vectors and 6 energies"
         );
     }
     const int n = int((s.size() - nEnergies)/nVectors);
@@ -336,6 +350,7 @@ void timeIntegrator::setState(const std::vector<double>& s)
     energy_.externalWork = s[i + 2];
     energy_.contactWork = s[i + 3];
     energy_.frictionWork = s[i + 4];
+    energy_.initialKinetic = nEnergies == 6 ? s[i + 5] : 0.0;
     Um_ = U_;
     Vm_ = V_;
 }

@@ -171,7 +171,8 @@ void Foam::formScene::initialiseDynamics(scalar t0, const form::vecX& V0)
 void Foam::formScene::writeEnergy(scalar time)
 {
     const form::energyBalance& e = integrator_->energy();
-    const scalar level = max(e.externalWork, e.kinetic + e.internalWork);
+    const scalar level =
+        max(e.initialKinetic + e.externalWork, e.kinetic + e.internalWork);
     Info<< "    energy: kinetic " << e.kinetic << ", internal work "
         << e.internalWork << ", external work " << e.externalWork;
     if (contact_)
@@ -1191,6 +1192,11 @@ void Foam::formScene::run()
             (
                 0, form::vecX::Zero(solid.model().nDofs())
             );
+            // and backward-Euler slip rates over the (pseudo-)time step
+            if (solid.model().contact())
+            {
+                solid.model().contact()->setSlipRateLaw(1, 0);
+            }
             Info<< "    static analysis (no inertia) in this step" << endl;
         }
         previousDynamic = stepDynamic;

@@ -326,7 +326,7 @@ void Foam::solidContact::write(const word& timeName, scalar t) const
                 ? ", target patch " + ps.targetFaceSet : ", tool " + ps.tool)
             << ", time " << t << '\n'
             << "# node X Y x y gap normalForce tangentialForce weight"
-               " pressure shear slip closed\n";
+               " pressure shear slip closed slipRate\n";
         const form::feMesh& fe = solid_.feMesh().feMesh();
         for (const auto& r : model_->pairResults(ps.name, U, t))
         {
@@ -334,7 +334,8 @@ void Foam::solidContact::write(const word& timeName, scalar t) const
                 << ' ' << r.x(0) << ' ' << r.x(1) << ' ' << r.gap << ' '
                 << r.normalForce << ' ' << r.tangentialForce << ' '
                 << r.weight << ' ' << r.pressure << ' ' << r.shear << ' '
-                << r.slip << ' ' << (r.closed ? 1 : 0) << '\n';
+                << r.slip << ' ' << (r.closed ? 1 : 0) << ' ' << r.slipRate
+                << '\n';
         }
     }
     std::ofstream os(dir/"tools.dat");

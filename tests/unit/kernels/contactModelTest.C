@@ -141,7 +141,10 @@ struct contactSetup
 };
 
 
-void checkTangent(double friction, bool forceControlled)
+//- bathe: the slip-rate law of the Bathe scheme's second stage
+//  (contactModel::setSlipRateLaw), after a committed first stage that
+//  slid the nodes
+void checkTangent(double friction, bool forceControlled, bool bathe = false)
 {
     const contactSetup s(forceControlled);
     // eps large enough for central differences to resolve the corner
@@ -159,8 +162,21 @@ void checkTangent(double friction, bool forceControlled)
         U(2*a) = 0.05*s.mesh.X(a, 1) + 0.002*u(gen);
         U(2*a + 1) = 0.004*u(gen) + 0.001;
     }
-    cm.beginIncrement(0, 0.5, vecX::Zero(N));
-    cm.commit(vecX::Zero(N));
+    if (bathe)
+    {
+        // First stage to t = 0.25: half the shear
+        cm.beginIncrement(0, 0.25, vecX::Zero(N));
+        vecX fext = vecX::Zero(N), r;
+        const vecX Um = 0.5*U;
+        cm.evaluate(0.25, Um, fext, r, nullptr);
+        cm.commit(Um);
+        cm.setSlipRateLaw(1.5, -0.5);
+    }
+    else
+    {
+        cm.beginIncrement(0, 0.5, vecX::Zero(N));
+        cm.commit(vecX::Zero(N));
+    }
     vecX x(nC);
     for (int j = 0; j < nC; ++j) x(j) = 2e-3*u(gen);
     cm.addToUnknowns(x - cm.unknowns());
@@ -193,6 +209,91 @@ TEST(contactModel, tangentWithFriction)
 TEST(contactModel, tangentForceControlledTool)
 {
     checkTangent(0.2, true);
+}
+
+TEST(contactModel, tangentWithFrictionBatheSlipRateLaw)
+{
+    checkTangent(0.3, false, true);
+    checkTangent(0.2, true, true);
+}
+
+
+// The slip rate of the friction law is the integrator's velocity
+// (contactModel.H): a node sliding on the fixed flat ground along
+// x(t) = 0.3 t + 2 t^2 (a quadratic, which both formulas below
+// differentiate exactly) is stepped with h = 0.1 from t = 0.2 as the
+// integrators do: the trapezoidal rule's rate is the mean velocity over
+// the step, x'(t + h/2); the Bathe scheme's is, in the first stage (a
+// trapezoidal sub-step over gamma h) x'(t + gamma h/2), and in the second
+// (three-point Euler backward) the end velocity x'(t + h). The arc
+// length xi runs along the outline from x = 10 to x = -10, so the rate is
+// -x'
+TEST(contactModel, slipRateIsTheIntegratorsVelocity)
+{
+    const feMesh mesh = structuredQuadMesh
+    (
+        {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, 1, 1, 4, "Q4", "steel"
+    );
+    rigidToolSpec ground;
+    ground.name = "ground";
+    ground.profile = std::make_shared<rigidProfile>
+    (
+        std::vector<Eigen::Vector2d>{{10, 0}, {-10, 0}},
+        std::vector<double>{}
+    );
+    const auto x = [](double t) { return 0.3*t + 2*t*t; };
+    const auto v = [](double t) { return 0.3 + 4*t; };
+    const auto U = [&](double t)
+    {
+        // The bottom nodes slide by x(t), touching the ground
+        vecX u = vecX::Zero(2*mesh.nNodes());
+        for (int a = 0; a < mesh.nNodes(); ++a) u(2*a) = x(t);
+        return u;
+    };
+    const auto rateAt = [&](contactModel& cm, double t0, double t1)
+    {
+        vecX fext = vecX::Zero(2*mesh.nNodes()), r;
+        cm.evaluate(t1, U(t1), fext, r, nullptr);
+        const double rate = cm.pairResults("bottom", U(t1), t1)[0].slipRate;
+        cm.commit(U(t1));
+        (void)t0;
+        return rate;
+    };
+    const double t0 = 0.2, h = 0.1;
+    for (const double gamma : {0.5, 2 - std::sqrt(2.0)})
+    {
+        contactControls c;
+        c.epsilonT = 1e-6;
+        contactModel cm
+        (
+            mesh, analysisType::planeStrain, 2e5, {ground},
+            {{"bottom", "bottom", "ground", 0.3}}, c
+        );
+        cm.beginIncrement(0, t0, U(0));
+        rateAt(cm, 0, t0);
+
+        // Trapezoidal step
+        cm.setSlipRateLaw(1, 0);
+        cm.beginIncrement(t0, t0 + h, U(t0));
+        EXPECT_NEAR(rateAt(cm, t0, t0 + h), -v(t0 + h/2), 1e-12);
+
+        // Bathe step: stage 1 to t + gamma h, stage 2 to t + h
+        const double t = t0 + h, tm = t + gamma*h;
+        cm.setSlipRateLaw(1, 0);
+        cm.beginIncrement(t, tm, U(t));
+        EXPECT_NEAR(rateAt(cm, t, tm), -v(t + gamma*h/2), 1e-12);
+        cm.setSlipRateLaw(2 - gamma, -(1 - gamma)*(1 - gamma)/gamma);
+        cm.beginIncrement(tm, t + h, U(tm));
+        EXPECT_NEAR(rateAt(cm, tm, t + h), -v(t + h), 1e-12)
+            << "gamma " << gamma;
+    }
+
+    contactModel cm
+    (
+        mesh, analysisType::planeStrain, 2e5, {ground},
+        {{"bottom", "bottom", "ground", 0.3}}
+    );
+    EXPECT_THROW(cm.setSlipRateLaw(0, 0), numericalError);
 }
 
 

@@ -168,7 +168,8 @@ TEST(deformableTarget, projectionOnCurvedEdgesMatchesBruteForce)
 }
 
 
-void checkTangent(double friction)
+//- bathe: the slip-rate law of the Bathe scheme's second stage
+void checkTangent(double friction, bool bathe = false)
 {
     // The punch overhangs the block's right end: two of its bottom nodes
     // are beyond the target (off target)
@@ -182,8 +183,23 @@ void checkTangent(double friction)
     // Committed state: both bodies displaced a little (slip reference)
     vecX Un = vecX::Zero(N);
     for (int q = 0; q < N; ++q) Un(q) = 0.003*u(gen);
-    cm.beginIncrement(0, 0.5, Un);
-    cm.commit(Un);
+    if (bathe)
+    {
+        // A committed first stage to t = 0.25 that slid both bodies
+        // (the second stage's slip-rate law uses its slip)
+        vecX Um = Un;
+        for (int q = 0; q < N; ++q) Un(q) = 0.003*u(gen);
+        cm.beginIncrement(0, 0.25, Um);
+        vecX fext = vecX::Zero(N), r;
+        cm.evaluate(0.25, Un, fext, r, nullptr);
+        cm.commit(Un);
+        cm.setSlipRateLaw(1.5, -0.5);
+    }
+    else
+    {
+        cm.beginIncrement(0, 0.5, Un);
+        cm.commit(Un);
+    }
     // Current state: the punch pushed down and sideways onto the block
     // (some nodes penetrating, some open), the block's top curved
     vecX U = Un;
@@ -255,6 +271,11 @@ TEST(deformableContact, tangentFrictionless)
 TEST(deformableContact, tangentWithFriction)
 {
     checkTangent(0.3);
+}
+
+TEST(deformableContact, tangentWithFrictionBatheSlipRateLaw)
+{
+    checkTangent(0.3, true);
 }
 
 
