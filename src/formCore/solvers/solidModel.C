@@ -7,6 +7,7 @@ Description
 \*---------------------------------------------------------------------------*/
 #include "solidModel.H"
 #include "contactModel.H"
+#include "coupledBlock.H"
 #include "sparsityPattern.H"
 #include "formError.H"
 #include "wallClock.H"
@@ -95,8 +96,10 @@ struct solidModel::impl
     vecX fint;
     vecX fext;
 
-    //- Contact (optional) and the bordered Newton matrix it needs
+    //- Contact (optional), all coupled blocks (contact first, if any) and
+    //  the bordered Newton matrix they need
     std::shared_ptr<contactModel> contact;
+    std::vector<std::shared_ptr<coupledBlock>> coupled;
     sparseMatrix Ksys;
     std::vector<Eigen::Triplet<double>> triplets;
 
@@ -115,6 +118,14 @@ struct solidModel::impl
     phaseTimes times;
 
     int nDofs() const { return mesh.nNodes()*nDim; }
+
+    //- Unknowns of all coupled blocks
+    int nCoupled() const
+    {
+        int n = 0;
+        for (const auto& b : coupled) n += b->nUnknowns();
+        return n;
+    }
 
     void requireFinalised(const char* what) const
     {
@@ -192,7 +203,7 @@ struct solidModel::impl
 void solidModel::impl::buildSystemMatrix()
 {
     const int nFree = numbering.nFree();
-    const int nAll = nFree + contact->nUnknowns();
+    const int nAll = nFree + nCoupled();
     const int N = nDofs();
     std::vector<Eigen::Triplet<double>> all;
     all.reserve(Kff.nonZeros() + triplets.size());
@@ -647,7 +658,7 @@ int solidModel::nPrescribedDofs() const
 
 bool solidModel::unsymmetric() const
 {
-    if (!impl_->pressures.empty() || impl_->contact) return true;
+    if (!impl_->pressures.empty() || !impl_->coupled.empty()) return true;
     for (const auto& b : impl_->blocks)
     {
         if (!b.mat->symmetricTangent()) return true;
@@ -815,7 +826,7 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
 
     const int nFree = m.numbering.nFree();
     m.times.assembly += secondsSince(start);
-    if (!m.contact)
+    if (m.coupled.empty())
     {
         residual.resize(nFree);
         for (int k = 0; k < nFree; ++k)
@@ -826,27 +837,50 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
         return residual.allFinite();
     }
 
-    // Contact: forces into f_ext, its equations after the free dofs, and
-    // the Newton matrix K_ff bordered by the contact blocks
-    const auto contactStart = std::chrono::steady_clock::now();
-    const int nC = m.contact->nUnknowns();
-    vecX rc;
+    // Coupled blocks (contact, fluid cavity): their forces into f_ext,
+    // their equations after the free dofs, and the Newton matrix K_ff
+    // bordered by their triplets (block unknowns shifted by the block's
+    // offset)
+    const int nC = m.nCoupled();
     m.triplets.clear();
-    m.fcontact = -m.fext;
-    m.contact->evaluate
-    (
-        t, m.U, m.fext, rc, wantTangent ? &m.triplets : nullptr
-    );
-    m.fcontact += m.fext;
     residual.resize(nFree + nC);
+    std::vector<Eigen::Triplet<double>> local;
+    int offset = 0;
+    const int N = m.nDofs();
+    for (const auto& b : m.coupled)
+    {
+        const auto blockStart = std::chrono::steady_clock::now();
+        const bool isContact = b.get() == m.contact.get();
+        vecX rb;
+        local.clear();
+        if (isContact) m.fcontact = -m.fext;
+        b->evaluate(t, m.U, m.fext, rb, wantTangent ? &local : nullptr);
+        if (isContact) m.fcontact += m.fext;
+        residual.segment(nFree + offset, b->nUnknowns()) = rb;
+        for (const auto& tr : local)
+        {
+            m.triplets.emplace_back
+            (
+                tr.row() < N ? tr.row() : tr.row() + offset,
+                tr.col() < N ? tr.col() : tr.col() + offset,
+                tr.value()
+            );
+        }
+        offset += b->nUnknowns();
+        (isContact ? m.times.contact : m.times.fluid) +=
+            secondsSince(blockStart);
+    }
     for (int k = 0; k < nFree; ++k)
     {
         const int d = m.numbering.freeDofs[k];
         residual(k) = m.fext(d) - m.fint(d) - m.finertia(d);
     }
-    residual.tail(nC) = rc;
-    if (wantTangent) m.buildSystemMatrix();
-    m.times.contact += secondsSince(contactStart);
+    if (wantTangent)
+    {
+        const auto start = std::chrono::steady_clock::now();
+        m.buildSystemMatrix();
+        m.times.assembly += secondsSince(start);
+    }
     return residual.allFinite();
 }
 
@@ -855,13 +889,13 @@ const sparseMatrix& solidModel::Kff() const { return impl_->Kff; }
 
 const sparseMatrix& solidModel::K() const
 {
-    return impl_->contact ? impl_->Ksys : impl_->Kff;
+    return impl_->coupled.empty() ? impl_->Kff : impl_->Ksys;
 }
 
 
 int solidModel::nUnknowns() const
 {
-    return nFreeDofs() + (impl_->contact ? impl_->contact->nUnknowns() : 0);
+    return nFreeDofs() + impl_->nCoupled();
 }
 
 
@@ -873,8 +907,40 @@ contactModel* solidModel::contact() const
 
 void solidModel::setContact(std::shared_ptr<contactModel> contact)
 {
-    impl_->contact = std::move(contact);
+    impl& m = *impl_;
+    if (m.contact)
+    {
+        m.coupled.erase
+        (
+            std::find(m.coupled.begin(), m.coupled.end(), m.contact)
+        );
+    }
+    m.contact = std::move(contact);
+    if (m.contact) m.coupled.insert(m.coupled.begin(), m.contact);
+    ++m.revision;
+}
+
+
+void solidModel::addCoupledBlock(std::shared_ptr<coupledBlock> block)
+{
+    if (!block)
+    {
+        throw numericalError("solidModel::addCoupledBlock: no block");
+    }
+    impl_->coupled.push_back(std::move(block));
     ++impl_->revision;
+}
+
+
+int solidModel::coupledOffset(const coupledBlock* block) const
+{
+    int offset = 0;
+    for (const auto& b : impl_->coupled)
+    {
+        if (b.get() == block) return offset;
+        offset += b->nUnknowns();
+    }
+    return -1;
 }
 
 
@@ -939,17 +1005,21 @@ void solidModel::setReleaseLoads(const std::vector<double>& s)
 void solidModel::beginIncrement(double t0, double t1)
 {
     impl& m = *impl_;
-    if (m.contact) m.contact->beginIncrement(t0, t1, m.Ucommitted);
+    for (const auto& b : m.coupled) b->beginIncrement(t0, t1, m.Ucommitted);
 }
 
 
 vecX solidModel::state() const
 {
     const impl& m = *impl_;
-    const int nC = m.contact ? m.contact->nUnknowns() : 0;
-    vecX s(m.nDofs() + nC);
+    vecX s(m.nDofs() + m.nCoupled());
     s.head(m.nDofs()) = m.U;
-    if (nC) s.tail(nC) = m.contact->unknowns();
+    int offset = m.nDofs();
+    for (const auto& b : m.coupled)
+    {
+        s.segment(offset, b->nUnknowns()) = b->unknowns();
+        offset += b->nUnknowns();
+    }
     return s;
 }
 
@@ -959,9 +1029,11 @@ void solidModel::addToState(const vecX& d)
     impl& m = *impl_;
     m.requireFinalised("addToState");
     for (int dof : m.numbering.freeDofs) m.U(dof) += d(dof);
-    if (m.contact)
+    int offset = m.nDofs();
+    for (const auto& b : m.coupled)
     {
-        m.contact->addToUnknowns(d.tail(m.contact->nUnknowns()));
+        b->addToUnknowns(d.segment(offset, b->nUnknowns()));
+        offset += b->nUnknowns();
     }
 }
 
@@ -969,8 +1041,9 @@ void solidModel::addToState(const vecX& d)
 std::string solidModel::iterationNote(const vecX& residual) const
 {
     const impl& m = *impl_;
-    if (!m.contact) return "";
-    std::string note = "  closed " + std::to_string(m.contact->nClosed());
+    if (m.coupled.empty()) return "";
+    std::string note =
+        m.contact ? "  closed " + std::to_string(m.contact->nClosed()) : "";
     if (residual.size() == 0) return note;
     int i;
     residual.cwiseAbs().maxCoeff(&i);
@@ -983,7 +1056,16 @@ std::string solidModel::iterationNote(const vecX& residual) const
     }
     else
     {
-        note += "  max at " + m.contact->unknownName(i - nFree);
+        int j = i - nFree;
+        for (const auto& b : m.coupled)
+        {
+            if (j < b->nUnknowns())
+            {
+                note += "  max at " + b->unknownName(j);
+                break;
+            }
+            j -= b->nUnknowns();
+        }
     }
     return note;
 }
@@ -1024,13 +1106,18 @@ void solidModel::addToFree(const vecX& dUf)
     impl& m = *impl_;
     m.requireFinalised("addToFree");
     const int nFree = m.numbering.nFree();
-    if (m.contact && dUf.size() == nFree + m.contact->nUnknowns())
+    if (!m.coupled.empty() && dUf.size() == nFree + m.nCoupled())
     {
         for (int k = 0; k < nFree; ++k)
         {
             m.U(m.numbering.freeDofs[k]) += dUf(k);
         }
-        m.contact->addToUnknowns(dUf.tail(m.contact->nUnknowns()));
+        int offset = nFree;
+        for (const auto& b : m.coupled)
+        {
+            b->addToUnknowns(dUf.segment(offset, b->nUnknowns()));
+            offset += b->nUnknowns();
+        }
         return;
     }
     if (dUf.size() != nFree)
@@ -1238,7 +1325,7 @@ solidModel::savedState solidModel::save() const
     savedState s;
     s.U = m.Ucommitted;
     s.materialStates = m.committed;
-    if (m.contact) s.contact = m.contact->state();
+    for (const auto& b : m.coupled) s.coupled.push_back(b->state());
     s.releaseLoads = releaseLoads();
     return s;
 }
@@ -1250,7 +1337,10 @@ void solidModel::restore(const savedState& s)
     setDisplacement(s.U);
     m.Ucommitted = s.U;
     setMaterialStates(s.materialStates);
-    if (m.contact) m.contact->setState(s.contact);
+    for (std::size_t i = 0; i < m.coupled.size() && i < s.coupled.size(); ++i)
+    {
+        m.coupled[i]->setState(s.coupled[i]);
+    }
     setReleaseLoads(s.releaseLoads);
 }
 
@@ -1260,7 +1350,7 @@ void solidModel::commit()
     impl& m = *impl_;
     m.Ucommitted = m.U;
     m.committed = m.trial;
-    if (m.contact) m.contact->commit(m.U);
+    for (const auto& b : m.coupled) b->commit(m.U);
 }
 
 
@@ -1269,7 +1359,7 @@ void solidModel::revert()
     impl& m = *impl_;
     m.U = m.Ucommitted;
     m.trial = m.committed;
-    if (m.contact) m.contact->revert();
+    for (const auto& b : m.coupled) b->revert();
 }
 
 
