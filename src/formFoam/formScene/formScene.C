@@ -270,8 +270,22 @@ void Foam::formScene::printScene() const
     {
         Info<< "    contact: none declared (not built)" << nl;
     }
+    if (fluid_)
+    {
+        std::istringstream is(fluid_->describe());
+        std::string line;
+        std::getline(is, line);
+        Info<< "    " << line.c_str() << nl;
+        while (std::getline(is, line))
+        {
+            Info<< "        " << line.c_str() << nl;
+        }
+    }
+    else
+    {
+        Info<< "    fluid: none declared (not built)" << nl;
+    }
     Info
-        << "    fluid: none declared (not built)" << nl
         << "    linear solver: " << linearSolver_->type().c_str() << nl
         << "    steps: t = " << steps_.startTime << " -> " << steps_.endTime
         << ", deltaT " << steps_.deltaT << " (min " << steps_.minDeltaT
@@ -515,7 +529,7 @@ void Foam::formScene::readSummary()
         se.dict = e.dict();
         const dictionary& ed = se.dict;
         const word type = ed.get<word>("type");
-        const wordList common{"type", "scale", "statistic", "time"};
+        const wordList common{"type", "scale", "statistic", "time", "at"};
         wordList keys(common);
         if (type == "displacement" || type == "position")
         {
@@ -544,6 +558,15 @@ void Foam::formScene::readSummary()
         {
             keys.append(wordList{"tool", "component"});
         }
+        else if
+        (
+            fluid_
+         && (
+                type == "fluidPressure" || type == "fluidVolume"
+             || type == "injectedVolume"
+            )
+        )
+        {}
         else if (type == "extent")
         {
             keys.append(wordList{"patch", "component", "extreme"});
@@ -595,6 +618,7 @@ void Foam::formScene::readSummary()
                 << " circleRadius rotation bendingRadius extent difference"
                 << " uChannelSpringback"
                 << (contact_ ? " toolForce toolPosition" : "")
+                << (fluid_ ? " fluidPressure fluidVolume injectedVolume" : "")
                 << exit(FatalIOError);
         }
         checkKeywords(ed, keys);
@@ -609,6 +633,27 @@ void Foam::formScene::readSummary()
         se.scale = ed.getOrDefault<scalar>("scale", 1);
         se.atTime = ed.found("time");
         if (se.atTime) se.time = ed.get<scalar>("time");
+        if (ed.found("at"))
+        {
+            // at (entry value): the value where an entry listed before
+            // this one first reaches value
+            ITstream& is = ed.lookup("at");
+            const Tuple2<word, scalar> at(is);
+            forAll(summary_, k)
+            {
+                if (summary_[k].name == at.first()) se.atEntry = k;
+            }
+            if (se.atEntry < 0 || se.atTime || se.statistic != "final")
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'at' in " << ed.name() << ": needs a summary"
+                    << " entry listed before '" << e.keyword() << "' and a"
+                    << " value, e.g. at (poleHeight 30); (got " << at.first()
+                    << "), and neither 'time' nor a statistic"
+                    << exit(FatalIOError);
+            }
+            se.atValue = at.second();
+        }
         summary_.push_back(se);
         // Validate points and patches now, not at the end of the run (a
         // springback measure needs a formed channel: patch only)
@@ -688,6 +733,18 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
             ed
         );
     }
+    else if (type == "fluidPressure")
+    {
+        value = fluid_->pressure();
+    }
+    else if (type == "fluidVolume")
+    {
+        value = fluid_->volume();
+    }
+    else if (type == "injectedVolume")
+    {
+        value = fluid_->injectedVolume(summaryTime_);
+    }
     else if (type == "toolPosition")
     {
         value = contact_->toolPosition
@@ -754,9 +811,36 @@ void Foam::formScene::updateEntry
     bool first
 )
 {
-    const scalar tPrev = e.prevTime, vPrev = e.prevValue;
-    e.prevTime = time;
-    e.prevValue = v;
+    const scalar tPrev = e.curTime, vPrev = e.curValue;
+    e.prevTime = tPrev;
+    e.prevValue = vPrev;
+    e.curTime = time;
+    e.curValue = v;
+    if (e.atEntry >= 0)
+    {
+        // The value where entry atEntry (updated before this one in the
+        // same record) first reaches atValue: linear interpolation
+        // between the two records that bracket it
+        if (e.set) return;
+        const summaryEntry& a = summary_[e.atEntry];
+        const scalar target = e.atValue;
+        if (a.curValue == target)
+        {
+            e.value = v;
+            e.set = true;
+        }
+        else if
+        (
+            !first && a.prevValue != target
+         && (a.prevValue - target)*(a.curValue - target) < 0
+        )
+        {
+            const scalar w = (target - a.prevValue)/(a.curValue - a.prevValue);
+            e.value = vPrev + w*(v - vPrev);
+            e.set = true;
+        }
+        return;
+    }
     if (e.atTime)
     {
         // Value at e.time: linear interpolation between the converged
@@ -887,6 +971,15 @@ void Foam::formScene::writeSummary
 
         for (const summaryEntry& e : summary_)
         {
+            if (!e.set && e.atEntry >= 0)
+            {
+                FatalIOErrorInFunction(e.dict)
+                    << "summary entry '" << e.name << "' in " << e.dict.name()
+                    << " was never evaluated: '" << summary_[e.atEntry].name
+                    << "' never reached " << e.atValue << " (it ended at "
+                    << summary_[e.atEntry].curValue << ")"
+                    << exit(FatalIOError);
+            }
             if (!e.set)
             {
                 FatalIOErrorInFunction(e.dict)
@@ -898,6 +991,10 @@ void Foam::formScene::writeSummary
             Info<< "    " << e.name << " = " << e.value << nl;
         }
         os.writeEntry("elementType", s.elementType());
+        os.writeEntry
+        (
+            "fluidModel", fluid_ ? fluid_->fluidModel() : word("none")
+        );
         os.writeEntry("nElements", s.feMesh().feMesh().nElements());
         os.writeEntry("nDofs", s.model().nFreeDofs());
         os.writeEntry("steps", nSteps);
@@ -941,11 +1038,11 @@ Foam::formScene::formScene(Time& runTime)
     const regionProperties rp(runTime);
     const wordList fluidNames(rp.found("fluid") ? rp["fluid"] : wordList());
     const wordList solidNames(rp.found("solid") ? rp["solid"] : wordList());
-    if (fluidNames.size())
+    if (fluidNames.size() > 1)
     {
         FatalErrorInFunction
             << "constant/regionProperties lists fluid regions " << fluidNames
-            << "; fluid regions are not available yet" << exit(FatalError);
+            << "; one fluid region is supported" << exit(FatalError);
     }
     if (solidNames.size() != 1)
     {
@@ -961,15 +1058,22 @@ Foam::formScene::formScene(Time& runTime)
     {
         contact_.reset(new solidContact(runTime, solids_[0]));
     }
-    // auto: the energy line search suits potential problems; contact
-    // (saddle point, friction) needs the residual-norm backtracking
+    // A fluid only if regionProperties lists one: a dry case builds none
+    if (fluidNames.size())
+    {
+        fluid_.reset(new fluidRegion(runTime, fluidNames[0], solids_));
+    }
+    // auto: the energy line search suits potential problems; contact and
+    // a fluid cavity (saddle points, friction) need the residual-norm
+    // backtracking
     newton_.residualLineSearch =
         lineSearchType_ == "residual"
-     || (lineSearchType_ == "auto" && contact_);
+     || (lineSearchType_ == "auto" && (contact_ || fluid_));
     // auto: extrapolate the last increment when tools move over the body
+    // or fluid is injected
     newton_.extrapolate =
         predictor_ == "extrapolate" || predictor_ == "quadratic"
-     || (predictor_ == "auto" && contact_);
+     || (predictor_ == "auto" && (contact_ || fluid_));
     newton_.quadratic = predictor_ == "quadratic";
 
     // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching
@@ -1001,8 +1105,9 @@ Foam::formScene::formScene(Time& runTime)
         FatalIOErrorInFunction(solution_)
             << "Entry 'linearSolver' in " << solution_.name() << ": "
             << solverName << " needs a symmetric positive definite matrix,"
-            << " but follower pressure loads or contact (a saddle point with"
-            << " friction terms) make the Newton matrix unsymmetric; use"
+            << " but follower pressure loads, contact (a saddle point with"
+            << " friction terms) or a fluid cavity (a saddle point) make the"
+            << " Newton matrix unsymmetric or indefinite; use"
             << " umfpack or auto" << exit(FatalIOError);
     }
 
@@ -1028,6 +1133,7 @@ Foam::formScene::formScene(Time& runTime)
 
     if (steps_.startTime > 0 && solids_[0].readState(runTime.timeName()))
     {
+        if (fluid_) fluid_->readState(runTime.timeName());
         solids_[0].model().commit();
         if (integrator_)
         {
@@ -1119,6 +1225,7 @@ void Foam::formScene::run()
             f.write();
         }
         if (contact_) contact_->write(runTime_.timeName(), t);
+        if (fluid_) fluid_->write(runTime_.timeName());
         solid.model().times().output += outClock.elapsedTime();
     };
 
@@ -1237,6 +1344,7 @@ void Foam::formScene::run()
                         << (r.cutbacks ? Foam::name(r.cutbacks) : word())
                         << "  elapsed " << elapsed << " s  ETA " << eta
                         << " s" << endl;
+                    if (fluid_) Info<< fluid_->report(r.time).c_str() << endl;
                     recordSummary(r.time, false);
                     if (stepDynamic) writeEnergy(r.time);
 
@@ -1308,6 +1416,7 @@ void Foam::formScene::run()
     Info<< nl << "Time per phase (s)" << nl
         << "    assembly        " << t.assembly << nl
         << "    contact         " << t.contact << nl
+        << "    fluid           " << t.fluid << nl
         << "    factorisation   " << t.factorisation << nl
         << "    solve           " << t.solve << nl
         << "    output          " << t.output << nl
@@ -1319,7 +1428,7 @@ void Foam::formScene::run()
         const scalar n = nIterations;
         Info<< "Time per Newton iteration (ms): assembly "
             << 1e3*t.assembly/n << ", contact " << 1e3*t.contact/n
-            << ", linear solve " << 1e3*(t.factorisation + t.solve)/n << nl;
+            << ", fluid " << 1e3*t.fluid/n << ", linear solve " << 1e3*(t.factorisation + t.solve)/n << nl;
     }
     Info<< nl << "End" << nl << endl;
 }

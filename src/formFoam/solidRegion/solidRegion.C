@@ -520,6 +520,21 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
     (
         new form::solidModel(feMesh_->feMesh(), analysis_, materials)
     );
+    if (analysis_ == form::analysisType::axisymmetric)
+    {
+        // Nodes on the axis (r = 0) stay on it by symmetry: u_r = 0 (the
+        // collapsed axis patch of a wedge mesh has no faces to carry a
+        // boundary condition); a condition of 0/<region>/D on the same
+        // dofs overrides it
+        const form::matX& X = feMesh_->feMesh().X;
+        const scalar tol = 1e-9*max(X.cwiseAbs().maxCoeff(), 1.0);
+        std::vector<int> onAxis;
+        for (int n = 0; n < X.rows(); ++n)
+        {
+            if (X(n, 0) <= tol) onAxis.push_back(n);
+        }
+        if (!onAxis.empty()) model_->addConstraint(onAxis, 0);
+    }
     readBoundaryConditions();
     model_->finalise();
 

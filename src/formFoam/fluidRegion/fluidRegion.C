@@ -1,0 +1,319 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    constant/<fluid>/fluidProperties -> a fluid model joined to the solid's
+    Newton system (see fluidRegion.H).
+\*---------------------------------------------------------------------------*/
+#include "fluidRegion.H"
+#include "dictionaryChecks.H"
+#include "formError.H"
+#include "IOField.H"
+#include "OSspecific.H"
+#include <limits>
+#include <sstream>
+
+namespace
+{
+
+Foam::solidRegion& findSolid
+(
+    const Foam::IOdictionary& dict,
+    Foam::PtrList<Foam::solidRegion>& solids
+)
+{
+    using namespace Foam;
+    const fileName file = dict.objectPath().relative(dict.time().path());
+    if (!dict.found("solidRegion"))
+    {
+        if (solids.size() != 1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'solidRegion' missing in " << file
+                << ": name the solid region the fluid wets" << exit(FatalIOError);
+        }
+        return solids[0];
+    }
+    const word name = dict.get<word>("solidRegion");
+    wordList names;
+    for (solidRegion& s : solids)
+    {
+        if (s.name() == name) return s;
+        names.append(s.name());
+    }
+    FatalIOErrorInFunction(dict)
+        << "Entry 'solidRegion' in " << file << ": unknown solid"
+        << " region '" << name << "'" << nl
+        << "    Solid regions of constant/regionProperties: " << names
+        << exit(FatalIOError);
+    return solids[0];
+}
+
+} // anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::fluidRegion::fluidModels()
+{
+    return {"hydrostatic", "ALENavierStokes"};
+}
+
+
+Foam::fluidRegion::fluidRegion
+(
+    const Time& runTime,
+    const word& name,
+    PtrList<solidRegion>& solids
+)
+:
+    runTime_(runTime),
+    name_(name),
+    dict_
+    (
+        IOobject
+        (
+            "fluidProperties", runTime.constant(), name, runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    ),
+    model_(dict_.get<word>("fluidModel")),
+    solid_(findSolid(dict_, solids))
+{
+    // The file as the user sees it, for messages
+    const fileName file = fileName("constant")/name/"fluidProperties";
+    if (!fluidModels().found(model_))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'fluidModel' in " << file << ": unknown model '"
+            << model_ << "'" << nl << "    Valid fluid models: "
+            << fluidModels() << exit(FatalIOError);
+    }
+    if (model_ == "ALENavierStokes")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'fluidModel' in " << file << ": the "
+            << "ALENavierStokes fluid is not implemented yet; use hydrostatic"
+            << " (a fluid cavity with one uniform pressure)"
+            << exit(FatalIOError);
+    }
+    checkKeywords
+    (
+        dict_,
+        {"fluidModel", "solidRegion", "interface", "bulkModulus",
+         "initialVolume", "injectedVolume", "pressure"}
+    );
+
+    form::hydrostaticCavitySpec spec;
+    spec.name = name_;
+
+    // The interface: wetted patches of the solid region
+    if (!dict_.found("interface"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'interface' missing in " << file << ": fluid"
+            << " region '" << name_ << "' needs an interface with solid"
+            << " region '" << solid_.name() << "' (its wetted patches, e.g."
+            << " interface (bottom);)" << exit(FatalIOError);
+    }
+    const wordList patches = dict_.get<wordList>("interface");
+    if (patches.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'interface' in " << file << " is empty: fluid"
+            << " region '" << name_ << "' has no interface with a solid"
+            << exit(FatalIOError);
+    }
+    const auto& faceSets = solid_.feMesh().feMesh().faceSets;
+    for (const word& p : patches)
+    {
+        if
+        (
+            !faceSets.count(p) || faceSets.at(p).empty()
+         || solid_.mesh().boundaryMesh().findPatchID(p) < 0
+        )
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'interface' in " << file << ": '" << p
+                << "' is not a patch of solid region '" << solid_.name()
+                << "'" << nl << "    Patches: "
+                << solid_.mesh().boundaryMesh().names() << exit(FatalIOError);
+        }
+        spec.faceSets.push_back(p);
+    }
+    if (solid_.analysis() == form::analysisType::solid3D)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'fluidModel' in " << file << ": the hydrostatic"
+            << " cavity needs a plane strain or axisymmetric solid region;"
+            << " '" << solid_.name() << "' is 3D" << exit(FatalIOError);
+    }
+
+    // The fluid: bulk modulus (or incompressible), initial volume
+    {
+        ITstream& is = dict_.lookup("bulkModulus");
+        const token t(is);
+        if (t.isWord() && t.wordToken() == "incompressible")
+        {
+            spec.bulkModulus = std::numeric_limits<double>::infinity();
+        }
+        else if (t.isNumber() && t.number() > 0)
+        {
+            spec.bulkModulus = t.number();
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'bulkModulus' in " << file << " must be a"
+                << " positive number or 'incompressible', got " << t
+                << exit(FatalIOError);
+        }
+    }
+    spec.initialVolume = dict_.get<scalar>("initialVolume");
+    if (!(spec.initialVolume > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'initialVolume' in " << file << " must be"
+            << " positive (the cavity's volume at the start, fixed walls"
+            << " included), got " << spec.initialVolume << exit(FatalIOError);
+    }
+
+    // The load: injected volume or pressure, one of them
+    const bool vol = dict_.found("injectedVolume");
+    if (vol == dict_.found("pressure"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Fluid region '" << name_ << "' in " << file
+            << " needs exactly one of 'injectedVolume' (volume control) and"
+            << " 'pressure' (pressure control)" << exit(FatalIOError);
+    }
+    load_.reset
+    (
+        Function1<scalar>::New(vol ? "injectedVolume" : "pressure", dict_)
+       .ptr()
+    );
+    const std::shared_ptr<Function1<scalar>> f = load_;
+    if (vol)
+    {
+        spec.injectedVolume = [f](double t) { return f->value(t); };
+    }
+    else
+    {
+        spec.pressure = [f](double t) { return f->value(t); };
+    }
+    // The pressure equation's scale: Young's modulus of the solid
+    const form::material& mat = solid_.material();
+    const scalar K = mat.bulkModulus(), G = mat.shearModulus();
+    spec.referenceModulus = 9*K*G/(3*K + G);
+
+    try
+    {
+        cavity_ = std::make_shared<form::hydrostaticCavity>
+        (
+            solid_.feMesh().feMesh(), solid_.analysis(), spec
+        );
+    }
+    catch (const form::inputError& e)
+    {
+        fatalInput(dict_, e);
+    }
+    solid_.model().addCoupledBlock(cavity_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::fluidRegion::pressure() const
+{
+    return cavity_->pressure();
+}
+
+
+Foam::scalar Foam::fluidRegion::volume() const
+{
+    return cavity_->volume(solid_.model().U());
+}
+
+
+Foam::scalar Foam::fluidRegion::injectedVolume(scalar t) const
+{
+    return cavity_->injected(t);
+}
+
+
+Foam::string Foam::fluidRegion::describe() const
+{
+    std::ostringstream os;
+    os  << "fluid region " << name_ << ": " << model_
+        << " (one uniform pressure, no fluid mesh), wets "
+        << solid_.name() << " on";
+    for (const std::string& p : cavity_->spec().faceSets) os << ' ' << p;
+    os  << '\n' << cavity_->describe();
+    if (!std::isfinite(cavity_->spec().bulkModulus)) os << " (incompressible)";
+    return os.str();
+}
+
+
+Foam::string Foam::fluidRegion::report(scalar t) const
+{
+    std::ostringstream os;
+    os.precision(6);
+    os  << "    fluid " << name_ << ": p = " << pressure() << ", V = "
+        << volume();
+    if (cavity_->volumeControlled())
+    {
+        os << ", injected " << injectedVolume(t);
+    }
+    return os.str();
+}
+
+
+void Foam::fluidRegion::write(const word& timeName) const
+{
+    const std::vector<double> s = cavity_->state();
+    IOField<scalar> f
+    (
+        IOobject
+        (
+            "fluidState", timeName, name_, runTime_,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        ),
+        scalarField(s.size())
+    );
+    forAll(f, i) f[i] = s[i];
+    if (!f.write())
+    {
+        FatalErrorInFunction
+            << "Writing " << f.objectPath() << " failed" << exit(FatalError);
+    }
+}
+
+
+void Foam::fluidRegion::readState(const word& timeName)
+{
+    IOobject io
+    (
+        "fluidState", timeName, name_, runTime_,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    if (!io.typeHeaderOk<IOField<scalar>>(true))
+    {
+        FatalErrorInFunction
+            << "Restart at time " << timeName << ": the state of fluid region"
+            << " '" << name_ << "' (" << io.objectPath() << ") is missing"
+            << exit(FatalError);
+    }
+    const IOField<scalar> f(io);
+    try
+    {
+        cavity_->setState(std::vector<double>(f.begin(), f.end()));
+    }
+    catch (const form::numericalError& e)
+    {
+        FatalErrorInFunction
+            << f.objectPath() << ": " << e.what() << exit(FatalError);
+    }
+}
+
+
+// ************************************************************************* //
