@@ -192,8 +192,8 @@ tryCase "fluid: zero initial volume" \
 tryCase "fluid: unknown fluid model" \
     "Entry 'fluidModel' in .*fluidProperties.*unknown model 'hydrostatics'" \
     "sed -i 's/^fluidModel .*/fluidModel hydrostatics;/' $fp"
-tryCase "fluid: ALE model not available yet" \
-    "ALENavierStokes fluid is not implemented yet" \
+tryCase "fluid: ALE fluid coupled to a solid not available yet" \
+    "interface block that couples the ALENavierStokes fluid to a solid is not implemented yet" \
     "sed -i 's/^fluidModel .*/fluidModel ALENavierStokes;/' $fp"
 tryCase "fluid: both volume and pressure control" \
     "needs exactly one of 'injectedVolume'.*'pressure'" \

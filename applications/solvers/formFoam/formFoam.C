@@ -11,7 +11,7 @@ Description
     src/formFoam/formScene/formScene.H for the dictionaries).
 
 Usage
-    formFoam [-case dir]
+    formFoam [-case dir] [-checkTangent]
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
@@ -24,10 +24,17 @@ int main(int argc, char *argv[])
 {
     argList::addNote("Implicit FE forming solver (formFoam)");
     argList::noParallel();
+    argList::addBoolOption
+    (
+        "checkTangent",
+        "after each converged step, compare the fluid block's Newton matrix"
+        " with finite differences of its residuals (small cases)"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
 
     formScene scene(runTime);
+    scene.checkTangents(args.found("checkTangent"));
     scene.run();
 
     return 0;

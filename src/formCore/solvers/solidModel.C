@@ -1387,6 +1387,10 @@ double solidModel::externalForceNorm() const
     if (m.fext.size() != m.nDofs()) return 0;
     double s = 0;
     for (int d : m.numbering.freeDofs) s += m.fext(d)*m.fext(d);
+    for (const auto& b : m.coupled)
+    {
+        s += b->residualScale()*b->residualScale();
+    }
     return std::sqrt(s);
 }
 

@@ -10,6 +10,7 @@ Description
 #include "formError.H"
 #include "IOField.H"
 #include "OSspecific.H"
+#include "pointIOField.H"
 #include <limits>
 #include <sstream>
 
@@ -62,9 +63,10 @@ Foam::wordList Foam::fluidRegion::fluidModels()
 
 Foam::fluidRegion::fluidRegion
 (
-    const Time& runTime,
+    Time& runTime,
     const word& name,
-    PtrList<solidRegion>& solids
+    PtrList<solidRegion>& solids,
+    form::solidModel& model
 )
 :
     runTime_(runTime),
@@ -78,7 +80,7 @@ Foam::fluidRegion::fluidRegion
         )
     ),
     model_(dict_.get<word>("fluidModel")),
-    solid_(findSolid(dict_, solids))
+    solid_(nullptr)
 {
     // The file as the user sees it, for messages
     const fileName file = fileName("constant")/name/"fluidProperties";
@@ -91,12 +93,17 @@ Foam::fluidRegion::fluidRegion
     }
     if (model_ == "ALENavierStokes")
     {
-        FatalIOErrorInFunction(dict_)
-            << "Entry 'fluidModel' in " << file << ": the "
-            << "ALENavierStokes fluid is not implemented yet; use hydrostatic"
-            << " (a fluid cavity with one uniform pressure)"
-            << exit(FatalIOError);
+        buildALE(solids, model);
+        return;
     }
+    if (solids.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'fluidModel' in " << file << ": the hydrostatic fluid"
+            << " is a cavity bounded by a solid, but constant/"
+            << "regionProperties lists no solid region" << exit(FatalIOError);
+    }
+    solid_ = &findSolid(dict_, solids);
     checkKeywords
     (
         dict_,
@@ -113,7 +120,7 @@ Foam::fluidRegion::fluidRegion
         FatalIOErrorInFunction(dict_)
             << "Entry 'interface' missing in " << file << ": fluid"
             << " region '" << name_ << "' needs an interface with solid"
-            << " region '" << solid_.name() << "' (its wetted patches, e.g."
+            << " region '" << solid_->name() << "' (its wetted patches, e.g."
             << " interface (bottom);)" << exit(FatalIOError);
     }
     const wordList patches = dict_.get<wordList>("interface");
@@ -124,29 +131,29 @@ Foam::fluidRegion::fluidRegion
             << " region '" << name_ << "' has no interface with a solid"
             << exit(FatalIOError);
     }
-    const auto& faceSets = solid_.feMesh().feMesh().faceSets;
+    const auto& faceSets = solid_->feMesh().feMesh().faceSets;
     for (const word& p : patches)
     {
         if
         (
             !faceSets.count(p) || faceSets.at(p).empty()
-         || solid_.mesh().boundaryMesh().findPatchID(p) < 0
+         || solid_->mesh().boundaryMesh().findPatchID(p) < 0
         )
         {
             FatalIOErrorInFunction(dict_)
                 << "Entry 'interface' in " << file << ": '" << p
-                << "' is not a patch of solid region '" << solid_.name()
+                << "' is not a patch of solid region '" << solid_->name()
                 << "'" << nl << "    Patches: "
-                << solid_.mesh().boundaryMesh().names() << exit(FatalIOError);
+                << solid_->mesh().boundaryMesh().names() << exit(FatalIOError);
         }
         spec.faceSets.push_back(p);
     }
-    if (solid_.analysis() == form::analysisType::solid3D)
+    if (solid_->analysis() == form::analysisType::solid3D)
     {
         FatalIOErrorInFunction(dict_)
             << "Entry 'fluidModel' in " << file << ": the hydrostatic"
             << " cavity needs a plane strain or axisymmetric solid region;"
-            << " '" << solid_.name() << "' is 3D" << exit(FatalIOError);
+            << " '" << solid_->name() << "' is 3D" << exit(FatalIOError);
     }
 
     // The fluid: bulk modulus (or incompressible), initial volume
@@ -202,7 +209,7 @@ Foam::fluidRegion::fluidRegion
         spec.pressure = [f](double t) { return f->value(t); };
     }
     // The pressure equation's scale: Young's modulus of the solid
-    const form::material& mat = solid_.material();
+    const form::material& mat = solid_->material();
     const scalar K = mat.bulkModulus(), G = mat.shearModulus();
     spec.referenceModulus = 9*K*G/(3*K + G);
 
@@ -210,14 +217,130 @@ Foam::fluidRegion::fluidRegion
     {
         cavity_ = std::make_shared<form::hydrostaticCavity>
         (
-            solid_.feMesh().feMesh(), solid_.analysis(), spec
+            solid_->feMesh().feMesh(), solid_->analysis(), spec
         );
     }
     catch (const form::inputError& e)
     {
         fatalInput(dict_, e);
     }
-    solid_.model().addCoupledBlock(cavity_);
+    model.addCoupledBlock(cavity_);
+}
+
+
+// * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
+
+void Foam::fluidRegion::buildALE
+(
+    PtrList<solidRegion>& solids,
+    form::solidModel& model
+)
+{
+    const fileName file = fileName("constant")/name_/"fluidProperties";
+    if (dict_.found("interface"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'interface' in " << file << ": the interface block"
+            << " that couples the ALENavierStokes fluid to a solid is not"
+            << " implemented yet; the ALE fluid runs on its own (walls,"
+            << " inlets, outlets), or use fluidModel hydrostatic for a"
+            << " fluid cavity" << exit(FatalIOError);
+    }
+    checkKeywords
+    (
+        dict_,
+        {"fluidModel", "solidRegion", "interface", "bulkModulus", "rho",
+         "mu", "meshMotion"}
+    );
+    (void)solids;
+
+    ALEFluidSettings set;
+    const auto positive = [&](const word& key)
+    {
+        const scalar v = dict_.get<scalar>(key);
+        if (!(v > 0))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry '" << key << "' in " << file << " must be"
+                << " positive, got " << v << exit(FatalIOError);
+        }
+        return v;
+    };
+    set.rho = positive("rho");
+    set.mu = positive("mu");
+    {
+        ITstream& is = dict_.lookup("bulkModulus");
+        const token t(is);
+        if (t.isWord() && t.wordToken() == "incompressible")
+        {
+            set.incompressible = true;
+        }
+        else if (t.isNumber() && t.number() > 0)
+        {
+            set.incompressible = false;
+            set.bulkModulus = t.number();
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'bulkModulus' in " << file << " must be a"
+                << " positive number or 'incompressible', got " << t
+                << exit(FatalIOError);
+        }
+    }
+    if (dict_.found("meshMotion"))
+    {
+        const dictionary& md = dict_.subDict("meshMotion");
+        checkKeywords
+        (
+            md, {"type", "amplitude", "period", "maxNonOrthogonality"}
+        );
+        set.meshMotion = md.get<word>("type");
+        set.maxNonOrthogonality =
+            md.getOrDefault<scalar>("maxNonOrthogonality", 80);
+        if (set.meshMotion == "oscillating")
+        {
+            set.amplitude = md.get<vector>("amplitude");
+            set.period = md.get<scalar>("period");
+            if (!(set.period > 0))
+            {
+                FatalIOErrorInFunction(md)
+                    << "Entry 'meshMotion/period' in " << file << " must be"
+                    << " positive" << exit(FatalIOError);
+            }
+        }
+        else if (set.meshMotion != "none")
+        {
+            FatalIOErrorInFunction(md)
+                << "Entry 'meshMotion/type' in " << file << ": unknown '"
+                << set.meshMotion << "'; valid: none oscillating"
+                << exit(FatalIOError);
+        }
+    }
+
+    // The region's mesh: constant/<fluid>/polyMesh
+    const fileName meshDir =
+        runTime_.path()/runTime_.constant()/name_/polyMesh::meshSubDir;
+    if (!isFile(meshDir/"faces") && !isFile(meshDir/"faces.gz"))
+    {
+        FatalErrorInFunction
+            << "Fluid region '" << name_ << "' (" << file << ", fluidModel"
+            << " ALENavierStokes) has no mesh: " << "constant"/name_
+            /polyMesh::meshSubDir << " is missing; run blockMesh -region "
+            << name_ << exit(FatalError);
+    }
+    mesh_.reset
+    (
+        new fvMesh
+        (
+            IOobject
+            (
+                name_, runTime_.timeName(), runTime_, IOobject::MUST_READ
+            )
+        )
+    );
+    ale_ = std::make_shared<ALENavierStokes>(runTime_, mesh_(), set);
+    model.addCoupledBlock(ale_);
 }
 
 
@@ -225,28 +348,62 @@ Foam::fluidRegion::fluidRegion
 
 Foam::scalar Foam::fluidRegion::pressure() const
 {
-    return cavity_->pressure();
+    return cavity_ ? cavity_->pressure() : NAN;
+}
+
+
+Foam::scalar Foam::fluidRegion::pressureAt(const point& pt) const
+{
+    if (cavity_) return cavity_->pressure();
+    const label c = ale_->findCell(pt);
+    return c < 0 ? NAN : ale_->cellPressure(c);
+}
+
+
+Foam::scalar Foam::fluidRegion::velocityAt(const point& pt, direction d) const
+{
+    if (cavity_) return 0;
+    const label c = ale_->findCell(pt);
+    return c < 0 ? NAN : ale_->cellVelocity(c)[d];
 }
 
 
 Foam::scalar Foam::fluidRegion::volume() const
 {
-    return cavity_->volume(solid_.model().U());
+    return cavity_ ? cavity_->volume(solid_->model().U()) : ale_->volume();
+}
+
+
+Foam::scalar Foam::fluidRegion::flowRate(const word& patch) const
+{
+    return ale_ ? ale_->patchFlux(patch) : 0;
+}
+
+
+bool Foam::fluidRegion::hasPatch(const word& patch) const
+{
+    return ale_ && mesh_->boundary().findPatchID(patch) >= 0;
 }
 
 
 Foam::scalar Foam::fluidRegion::injectedVolume(scalar t) const
 {
-    return cavity_->injected(t);
+    return cavity_ ? cavity_->injected(t) : NAN;
 }
 
 
 Foam::string Foam::fluidRegion::describe() const
 {
     std::ostringstream os;
+    if (ale_)
+    {
+        os  << "fluid region " << name_ << ": ALENavierStokes on its fvMesh"
+            << " (coupled velocity-pressure block)\n" << ale_->describe();
+        return os.str();
+    }
     os  << "fluid region " << name_ << ": " << model_
         << " (one uniform pressure, no fluid mesh), wets "
-        << solid_.name() << " on";
+        << solid_->name() << " on";
     for (const std::string& p : cavity_->spec().faceSets) os << ' ' << p;
     os  << '\n' << cavity_->describe();
     if (!std::isfinite(cavity_->spec().bulkModulus)) os << " (incompressible)";
@@ -258,6 +415,11 @@ Foam::string Foam::fluidRegion::report(scalar t) const
 {
     std::ostringstream os;
     os.precision(6);
+    if (ale_)
+    {
+        os  << "    fluid " << name_ << ": " << ale_->report();
+        return os.str();
+    }
     os  << "    fluid " << name_ << ": p = " << pressure() << ", V = "
         << volume();
     if (cavity_->volumeControlled())
@@ -270,6 +432,11 @@ Foam::string Foam::fluidRegion::report(scalar t) const
 
 void Foam::fluidRegion::write(const word& timeName) const
 {
+    if (ale_)
+    {
+        ale_->write(timeName);
+        return;
+    }
     const std::vector<double> s = cavity_->state();
     IOField<scalar> f
     (
@@ -291,6 +458,9 @@ void Foam::fluidRegion::write(const word& timeName) const
 
 void Foam::fluidRegion::readState(const word& timeName)
 {
+    // The ALE fluid read U, p (and the moved points) of the start time
+    // when it was built
+    if (ale_) return;
     IOobject io
     (
         "fluidState", timeName, name_, runTime_,

@@ -1,4 +1,5 @@
 #include "formScene.H"
+#include "blockTangentCheck.H"
 #include "dictionaryChecks.H"
 #include "regionProperties.H"
 #include "OFstream.H"
@@ -231,6 +232,11 @@ void Foam::formScene::printScene() const
     {
         Info<< "    " << s.describe().c_str() << nl;
     }
+    if (solids_.empty())
+    {
+        Info<< "    solid: none declared (the Newton system is the fluid's)"
+            << nl;
+    }
     if (integrator_)
     {
         Info<< "    analysis: dynamic, " << integratorName_;
@@ -389,8 +395,21 @@ void Foam::formScene::readSchedule()
 
 void Foam::formScene::applyActions(const processStep& step)
 {
-    solidRegion& s = solids_[0];
     const dictionary& d = step.actions;
+    if (solids_.empty())
+    {
+        for (const word key : {"release", "hold", "pin", "prescribe", "releaseTools"})
+        {
+            if (d.found(key))
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry '" << key << "' in " << d.name() << ": the"
+                    << " scene has no solid region" << exit(FatalIOError);
+            }
+        }
+        return;
+    }
+    solidRegion& s = solids_[0];
     const auto components = [&](const word& key, const entry& a, word& patch)
     {
         patch = a.keyword();
@@ -558,14 +577,31 @@ void Foam::formScene::readSummary()
         {
             keys.append(wordList{"tool", "component"});
         }
-        else if
-        (
-            fluid_
-         && (
-                type == "fluidPressure" || type == "fluidVolume"
-             || type == "injectedVolume"
-            )
-        )
+        else if (fluid_ && !fluid_->ALE() && type == "fluidPressure")
+        {}
+        else if (fluid_ && fluid_->ALE() && type == "fluidPressure")
+        {
+            keys.append(word("point"));
+        }
+        else if (fluid_ && fluid_->ALE() && type == "fluidVelocity")
+        {
+            keys.append(wordList{"point", "component"});
+        }
+        else if (fluid_ && fluid_->ALE() && type == "fluidFlowRate")
+        {
+            keys.append(word("patch"));
+            const word patch = ed.get<word>("patch");
+            if (!fluid_->hasPatch(patch))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'patch' in " << ed.name() << ": '" << patch
+                    << "' is not a patch of fluid region '" << fluid_->name()
+                    << "'" << exit(FatalIOError);
+            }
+        }
+        else if (fluid_ && type == "fluidVolume")
+        {}
+        else if (fluid_ && !fluid_->ALE() && type == "injectedVolume")
         {}
         else if (type == "extent")
         {
@@ -618,7 +654,12 @@ void Foam::formScene::readSummary()
                 << " circleRadius rotation bendingRadius extent difference"
                 << " uChannelSpringback"
                 << (contact_ ? " toolForce toolPosition" : "")
-                << (fluid_ ? " fluidPressure fluidVolume injectedVolume" : "")
+                << (
+                       !fluid_ ? ""
+                     : fluid_->ALE()
+                     ? " fluidPressure fluidVelocity fluidFlowRate fluidVolume"
+                     : " fluidPressure fluidVolume injectedVolume"
+                   )
                 << exit(FatalIOError);
         }
         checkKeywords(ed, keys);
@@ -654,6 +695,18 @@ void Foam::formScene::readSummary()
             }
             se.atValue = at.second();
         }
+        const wordList solidTypes
+        {
+            "displacement", "position", "reaction", "circleRadius",
+            "rotation", "bendingRadius", "extent", "uChannelSpringback"
+        };
+        if (solids_.empty() && solidTypes.found(type))
+        {
+            FatalIOErrorInFunction(ed)
+                << "summary entry '" << se.name << "' in " << ed.name()
+                << ": type '" << type << "' needs a solid region, and the"
+                << " scene has none" << exit(FatalIOError);
+        }
         summary_.push_back(se);
         // Validate points and patches now, not at the end of the run (a
         // springback measure needs a formed channel: patch only)
@@ -671,10 +724,43 @@ void Foam::formScene::readSummary()
 
 Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
 {
-    const solidRegion& s = solids_[0];
     const dictionary& ed = e.dict;
     const word type = ed.get<word>("type");
     scalar value = 0;
+    if (type.starts_with("fluid") || type == "injectedVolume")
+    {
+        return e.scale*evaluateFluid(ed, type);
+    }
+    if (type == "difference")
+    {
+        // The reported values (after their statistic or time) of two
+        // entries listed before this one
+        const wordList of = ed.get<wordList>("of");
+        scalar v[2] = {0, 0};
+        for (label i = 0; i < 2; ++i)
+        {
+            for (const summaryEntry& o : summary_)
+            {
+                if (o.name == of[i])
+                {
+                    v[i] = o.set ? o.value : NAN;
+                }
+            }
+        }
+        return e.scale*(v[0] - v[1]);
+    }
+    if (type == "toolForce" || type == "toolPosition")
+    {
+        const label comp = planeComponent(ed.get<word>("component"), ed);
+        const word tool = ed.get<word>("tool");
+        return e.scale*
+        (
+            type == "toolForce"
+          ? contact_->toolForce(tool, comp, ed)
+          : contact_->toolPosition(tool, comp, summaryTime_, ed)
+        );
+    }
+    const solidRegion& s = solids_[0];
     if (type == "circleRadius")
     {
         const wordList patches = ed.get<wordList>("patches");
@@ -702,56 +788,10 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
             ed.getOrDefault<word>("extreme", "max") == "max"
           ? c.maxCoeff() : c.minCoeff();
     }
-    else if (type == "difference")
-    {
-        // The reported values (after their statistic or time) of two
-        // entries listed before this one
-        const wordList of = ed.get<wordList>("of");
-        scalar v[2] = {0, 0};
-        for (label i = 0; i < 2; ++i)
-        {
-            for (const summaryEntry& o : summary_)
-            {
-                if (o.name == of[i])
-                {
-                    v[i] = o.set ? o.value : NAN;
-                }
-            }
-        }
-        value = v[0] - v[1];
-    }
     else if (type == "bendingRadius")
     {
         const scalar theta = s.patchRotation(ed.get<word>("patch"), ed);
         value = mag(theta) > VSMALL ? ed.get<scalar>("length")/mag(theta) : GREAT;
-    }
-    else if (type == "toolForce")
-    {
-        value = contact_->toolForce
-        (
-            ed.get<word>("tool"), planeComponent(ed.get<word>("component"), ed),
-            ed
-        );
-    }
-    else if (type == "fluidPressure")
-    {
-        value = fluid_->pressure();
-    }
-    else if (type == "fluidVolume")
-    {
-        value = fluid_->volume();
-    }
-    else if (type == "injectedVolume")
-    {
-        value = fluid_->injectedVolume(summaryTime_);
-    }
-    else if (type == "toolPosition")
-    {
-        value = contact_->toolPosition
-        (
-            ed.get<word>("tool"), planeComponent(ed.get<word>("component"), ed),
-            summaryTime_, ed
-        );
     }
     else if (type == "uChannelSpringback")
     {
@@ -800,6 +840,33 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         }
     }
     return e.scale*value;
+}
+
+
+Foam::scalar Foam::formScene::evaluateFluid
+(
+    const dictionary& ed,
+    const word& type
+) const
+{
+    if (type == "fluidVolume") return fluid_->volume();
+    if (type == "injectedVolume") return fluid_->injectedVolume(summaryTime_);
+    if (type == "fluidFlowRate") return fluid_->flowRate(ed.get<word>("patch"));
+    if (type == "fluidPressure" && !fluid_->ALE()) return fluid_->pressure();
+    // A point of the fluid mesh
+    const point pt = ed.get<point>("point");
+    const scalar v =
+        type == "fluidPressure"
+      ? fluid_->pressureAt(pt)
+      : fluid_->velocityAt(pt, vectorComponent(ed.get<word>("component"), ed));
+    if (std::isnan(v))
+    {
+        FatalIOErrorInFunction(ed)
+            << "Entry 'point' in " << ed.name() << ": " << pt << " is not"
+            << " inside the mesh of fluid region '" << fluid_->name() << "'"
+            << exit(FatalIOError);
+    }
+    return v;
 }
 
 
@@ -955,7 +1022,6 @@ void Foam::formScene::writeSummary
     scalar wallTime
 ) const
 {
-    const solidRegion& s = solids_[0];
     const fileName dir = runTime_.path()/"postProcessing";
     mkDir(dir);
     const fileName tmp = dir/"summary.writing";
@@ -990,13 +1056,24 @@ void Foam::formScene::writeSummary
             os.writeEntry(e.name, e.value);
             Info<< "    " << e.name << " = " << e.value << nl;
         }
-        os.writeEntry("elementType", s.elementType());
+        const bool solid = solids_.size();
+        os.writeEntry
+        (
+            "elementType", solid ? solids_[0].elementType() : word("none")
+        );
         os.writeEntry
         (
             "fluidModel", fluid_ ? fluid_->fluidModel() : word("none")
         );
-        os.writeEntry("nElements", s.feMesh().feMesh().nElements());
-        os.writeEntry("nDofs", s.model().nFreeDofs());
+        os.writeEntry
+        (
+            "nElements", solid ? solids_[0].feMesh().feMesh().nElements() : 0
+        );
+        os.writeEntry("nDofs", model().nFreeDofs());
+        if (fluid_ && fluid_->ALE())
+        {
+            os.writeEntry("nFluidUnknowns", model().nUnknowns() - model().nFreeDofs());
+        }
         os.writeEntry("steps", nSteps);
         os.writeEntry("newtonIterations", newtonIterations);
         os.writeEntry
@@ -1044,24 +1121,60 @@ Foam::formScene::formScene(Time& runTime)
             << "constant/regionProperties lists fluid regions " << fluidNames
             << "; one fluid region is supported" << exit(FatalError);
     }
-    if (solidNames.size() != 1)
+    if (solidNames.size() > 1 || (solidNames.empty() && fluidNames.empty()))
     {
         FatalErrorInFunction
-            << "constant/regionProperties must list exactly one solid region"
-            << " (found " << solidNames << ")" << exit(FatalError);
+            << "constant/regionProperties must list one solid region, or"
+            << " none with a fluid region (found solid " << solidNames
+            << ", fluid " << fluidNames << ")" << exit(FatalError);
     }
     for (const word& name : solidNames)
     {
         solids_.append(new solidRegion(runTime, name));
     }
+    if (solids_.empty())
+    {
+        // A fluid on its own: the Newton system of an empty solid model
+        // holds the fluid block alone
+        if (integrator_)
+        {
+            FatalIOErrorInFunction(solution_)
+                << "Entry 'analysis' in " << solution_.name() << ": dynamic"
+                << " analysis integrates a solid's inertia, and the scene"
+                << " has no solid region; the fluid's inertia is chosen by"
+                << " ddtSchemes in system/" << fluidNames[0] << "/fvSchemes"
+                << exit(FatalIOError);
+        }
+        form::feMesh empty;
+        empty.nDim = 2;
+        empty.X.resize(0, 2);
+        fluidOnlyModel_.reset
+        (
+            new form::solidModel
+            (
+                empty, form::analysisType::planeStrain, {}
+            )
+        );
+        fluidOnlyModel_->finalise();
+    }
     if (solidContact::declared(runTime))
     {
+        if (solids_.empty())
+        {
+            FatalErrorInFunction
+                << "constant/contactProperties declares contact, but"
+                << " constant/regionProperties lists no solid region"
+                << exit(FatalError);
+        }
         contact_.reset(new solidContact(runTime, solids_[0]));
     }
     // A fluid only if regionProperties lists one: a dry case builds none
     if (fluidNames.size())
     {
-        fluid_.reset(new fluidRegion(runTime, fluidNames[0], solids_));
+        fluid_.reset
+        (
+            new fluidRegion(runTime, fluidNames[0], solids_, model())
+        );
     }
     // auto: the energy line search suits potential problems; contact and
     // a fluid cavity (saddle points, friction) need the residual-norm
@@ -1079,7 +1192,7 @@ Foam::formScene::formScene(Time& runTime)
     // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching
     // to UMFPACK if a tangent turns out indefinite (autoSolver.H)
     word solverName = linearSolverName_;
-    if (solverName == "auto" && solids_[0].model().unsymmetric())
+    if (solverName == "auto" && model().unsymmetric())
     {
         solverName = "umfpack";
     }
@@ -1100,7 +1213,7 @@ Foam::formScene::formScene(Time& runTime)
             << "Entry 'linearSolver' in " << solution_.name() << ": "
             << err.what() << " auto" << exit(FatalIOError);
     }
-    if (linearSolver_->requiresSPD() && solids_[0].model().unsymmetric())
+    if (linearSolver_->requiresSPD() && model().unsymmetric())
     {
         FatalIOErrorInFunction(solution_)
             << "Entry 'linearSolver' in " << solution_.name() << ": "
@@ -1131,10 +1244,14 @@ Foam::formScene::formScene(Time& runTime)
         );
     }
 
-    if (steps_.startTime > 0 && solids_[0].readState(runTime.timeName()))
+    if
+    (
+        steps_.startTime > 0
+     && (solids_.empty() || solids_[0].readState(runTime.timeName()))
+    )
     {
         if (fluid_) fluid_->readState(runTime.timeName());
-        solids_[0].model().commit();
+        model().commit();
         if (integrator_)
         {
             IOobject io
@@ -1165,7 +1282,7 @@ Foam::formScene::formScene(Time& runTime)
         // Forces of the restored state (reactions, contact and tool
         // forces) for the first summary record
         form::vecX r;
-        solids_[0].model().evaluate(steps_.startTime, r, false);
+        model().evaluate(steps_.startTime, r, false);
         restarted_ = true;
         Info<< "Restarting from the state written at time "
             << runTime.timeName() << endl;
@@ -1190,7 +1307,7 @@ Foam::formScene::formScene(Time& runTime)
 void Foam::formScene::run()
 {
     printScene();
-    solidRegion& solid = solids_[0];
+    form::solidModel& model = this->model();
 
     const word writeControl =
         runTime_.controlDict().getOrDefault<word>("writeControl", "timeStep");
@@ -1208,7 +1325,7 @@ void Foam::formScene::run()
         const clockTime outClock;
         runTime_.setTime(t, index);
         Info<< "    writing time " << runTime_.timeName() << endl;
-        solid.write();
+        if (solids_.size()) solids_[0].write();
         if (integrator_)
         {
             const std::vector<double> ds = integrator_->state();
@@ -1216,7 +1333,7 @@ void Foam::formScene::run()
             (
                 IOobject
                 (
-                    "feDynamics", runTime_.timeName(), solid.mesh(),
+                    "feDynamics", runTime_.timeName(), solids_[0].mesh(),
                     IOobject::NO_READ, IOobject::NO_WRITE, false
                 ),
                 scalarField(ds.size())
@@ -1226,7 +1343,7 @@ void Foam::formScene::run()
         }
         if (contact_) contact_->write(runTime_.timeName(), t);
         if (fluid_) fluid_->write(runTime_.timeName());
-        solid.model().times().output += outClock.elapsedTime();
+        model.times().output += outClock.elapsedTime();
     };
 
     // After a restart the history before it is kept and replayed, so
@@ -1295,14 +1412,14 @@ void Foam::formScene::run()
         if (integrator_ && !stepDynamic)
         {
             // Inertia off: a(U) = 0
-            solid.model().setAccelerationLaw
+            model.setAccelerationLaw
             (
-                0, form::vecX::Zero(solid.model().nDofs())
+                0, form::vecX::Zero(model.nDofs())
             );
             // and backward-Euler slip rates over the (pseudo-)time step
-            if (solid.model().contact())
+            if (model.contact())
             {
-                solid.model().contact()->setSlipRateLaw(1, 0);
+                model.contact()->setSlipRateLaw(1, 0);
             }
             Info<< "    static analysis (no inertia) in this step" << endl;
         }
@@ -1317,7 +1434,7 @@ void Foam::formScene::run()
         sc.minDeltaT = min(steps_.minDeltaT, ps.deltaT);
         form::staticSolver solver
         (
-            solid.model(), *linearSolver_, newton_, sc, std::cout
+            model, *linearSolver_, newton_, sc, std::cout
         );
         solver.setIntegrator(stepDynamic ? integrator_.get() : nullptr);
 
@@ -1345,6 +1462,22 @@ void Foam::formScene::run()
                         << "  elapsed " << elapsed << " s  ETA " << eta
                         << " s" << endl;
                     if (fluid_) Info<< fluid_->report(r.time).c_str() << endl;
+                    if (fluid_ && checkTangent_)
+                    {
+                        const form::blockTangentError e =
+                            form::checkBlockTangent
+                            (
+                                fluid_->block(), r.time, model.U()
+                            );
+                        Info<< "    tangent check (" << fluid_->name()
+                            << "): max |K - K_fd|/max |K| = " << e.relative
+                            << " (max |K| " << e.maxEntry << "; worst at "
+                            << fluid_->block().unknownName(e.row).c_str()
+                            << " / "
+                            << fluid_->block().unknownName(e.col).c_str()
+                            << ": " << e.analytic << " vs "
+                            << e.finiteDifference << ")" << endl;
+                    }
                     recordSummary(r.time, false);
                     if (stepDynamic) writeEnergy(r.time);
 
@@ -1379,7 +1512,7 @@ void Foam::formScene::run()
         {
             // Input that only shows as wrong once the run meets it (e.g.
             // a force-controlled tool that can never touch the body)
-            solid.model().revert();
+            model.revert();
             const fileName where =
                 contact_ && contact_->hasTool(err.entry())
               ? runTime_.path()/"constant"/"contactProperties"
@@ -1390,7 +1523,7 @@ void Foam::formScene::run()
         }
         catch (const form::numericalError& err)
         {
-            solid.model().revert();
+            model.revert();
             // The start time directory holds the case's input: never
             // overwrite it
             if (lastTime > steps_.startTime)
@@ -1412,7 +1545,7 @@ void Foam::formScene::run()
     writeSummary(nIterations, nSteps, nCutbacks, wallTime);
 
     if (contact_) contact_->reportUntouched();
-    const form::phaseTimes& t = solid.model().times();
+    const form::phaseTimes& t = model.times();
     Info<< nl << "Time per phase (s)" << nl
         << "    assembly        " << t.assembly << nl
         << "    contact         " << t.contact << nl

@@ -1,0 +1,1041 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    The ALE Navier-Stokes fluid block (ALENavierStokes.H has the equations).
+\*---------------------------------------------------------------------------*/
+#include "ALENavierStokes.H"
+#include "wedgeFvPatch.H"
+#include "pointIOField.H"
+#include "formError.H"
+#include "mathematicalConstants.H"
+#include <sstream>
+
+namespace
+{
+
+using namespace Foam;
+
+//- A sparse linear form: sum of coefficients times cell values
+struct stencilEntry
+{
+    label cell;
+    vector coeff;
+};
+
+using stencil = std::vector<stencilEntry>;
+
+//- The representation of a boundary face value and normal gradient of the
+//  velocity as affine maps of the cell velocity:
+//      u_b = T u_P + c,   snGrad_b = Ts u_P + cs
+struct faceMap
+{
+    tensor T = Zero;
+    vector c = Zero;
+    tensor Ts = Zero;
+    vector cs = Zero;
+};
+
+} // anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::ALENavierStokes::ALENavierStokes
+(
+    Time& runTime,
+    fvMesh& mesh,
+    const ALEFluidSettings& settings
+)
+:
+    runTime_(runTime),
+    mesh_(mesh),
+    set_(settings),
+    fieldDir_(fileName(runTime.timeName())/mesh.name()),
+    U_
+    (
+        IOobject
+        (
+            "U", runTime.timeName(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE
+        ),
+        mesh
+    ),
+    p_
+    (
+        IOobject
+        (
+            "p", runTime.timeName(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE
+        ),
+        mesh
+    )
+{
+    // Solved components: the geometric directions
+    const Vector<label>& gD = mesh_.geometricD();
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (gD[d] == 1) cmp_.append(label(d));
+    }
+    D_ = cmp_.size();
+
+    // Depth factor: per unit depth (plane) or full ring (wedge)
+    depth_ = 1;
+    bool wedge = false;
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& fp = mesh_.boundary()[patchi];
+        if (isA<wedgeFvPatch>(fp) && fp.size())
+        {
+            const wedgePolyPatch& wp =
+                refCast<const wedgePolyPatch>(fp.patch());
+            // Each wedge plane is turned by half the wedge angle from
+            // the centre plane: cos(angle/2) = n . centreNormal
+            const scalar half =
+                Foam::acos(min(1.0, mag(wp.n() & wp.centreNormal())));
+            depth_ = constant::mathematical::pi/half;
+            wedge = true;
+            break;
+        }
+    }
+    if (!wedge && D_ == 2)
+    {
+        // Plane mesh: thickness in the empty direction
+        label e = 0;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (gD[d] != 1) e = d;
+        }
+        const boundBox& bb = mesh_.bounds();
+        depth_ = 1/(bb.max()[e] - bb.min()[e]);
+    }
+
+    // Schemes: ddt, convection, Laplacian correction
+    {
+        const word ddt(mesh_.ddtScheme("ddt(U)"));
+        if (ddt == "steadyState") steady_ = true;
+        else if (ddt == "Euler") steady_ = false;
+        else
+        {
+            FatalIOErrorInFunction(mesh_.schemesDict())
+                << "ddtSchemes in system/" << mesh_.name() << "/fvSchemes: '"
+                << ddt << "' is not available for the ALE fluid; use Euler"
+                << " (transient) or steadyState" << exit(FatalIOError);
+        }
+        ITstream& is = mesh_.divScheme("div(phi,U)");
+        wordList w;
+        while (!is.eof())
+        {
+            token t(is);
+            if (t.isWord()) w.append(t.wordToken());
+            else break;
+        }
+        if (w.size() != 2 || w[0] != "Gauss" || (w[1] != "linear" && w[1] != "upwind"))
+        {
+            FatalIOErrorInFunction(mesh_.schemesDict())
+                << "divSchemes div(phi,U) in system/" << mesh_.name()
+                << "/fvSchemes: the ALE fluid's Newton matrix is exact for"
+                << " 'Gauss linear' and 'Gauss upwind'; got " << w
+                << exit(FatalIOError);
+        }
+        upwind_ = w[1] == "upwind";
+        ITstream& ls = mesh_.laplacianScheme("laplacian(mu,U)");
+        wordList lw;
+        while (!ls.eof())
+        {
+            token t(ls);
+            if (t.isWord()) lw.append(t.wordToken());
+            else break;
+        }
+        if
+        (
+            lw.size() != 3 || lw[0] != "Gauss" || lw[1] != "linear"
+         || (lw[2] != "corrected" && lw[2] != "uncorrected")
+        )
+        {
+            FatalIOErrorInFunction(mesh_.schemesDict())
+                << "laplacianSchemes laplacian(mu,U) in system/"
+                << mesh_.name() << "/fvSchemes: use 'Gauss linear corrected'"
+                << " or 'Gauss linear uncorrected'; got " << lw
+                << exit(FatalIOError);
+        }
+        corrected_ = lw[2] == "corrected";
+    }
+
+    classifyPatches();
+
+    // Unknowns from the fields
+    const label nC = mesh_.nCells();
+    x_.setZero(nC*(D_ + 1));
+    forAll(U_, c)
+    {
+        for (label k = 0; k < D_; ++k) x_(iu(c, k)) = U_[c][cmp_[k]];
+        x_(ip(c)) = p_[c];
+    }
+    x0_ = x_;
+
+    points0_ = mesh_.points();
+    V0_ = mesh_.V();
+    Vstart_ = mesh_.V();
+    points00_ = pointIOField
+    (
+        IOobject
+        (
+            "points", runTime.constant(), polyMesh::meshSubDir, mesh_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    bbMin_ = boundBox(points00_).min();
+    bbMax_ = boundBox(points00_).max();
+
+    uFixed_.setSize(mesh_.boundary().size());
+    pFixedValue_.setSize(mesh_.boundary().size());
+    rAV_.setSize(nC, 0);
+    Fm_.setSize(mesh_.nFaces(), 0);
+    updateBoundaryValues();
+}
+
+
+// * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
+
+Foam::vector Foam::ALENavierStokes::cellU(const form::vecX& x, label c) const
+{
+    vector u = Zero;
+    for (label k = 0; k < D_; ++k) u[cmp_[k]] = x(iu(c, k));
+    return u;
+}
+
+
+void Foam::ALENavierStokes::classifyPatches()
+{
+    const label nP = mesh_.boundary().size();
+    uBC_.setSize(nP);
+    pFixed_.setSize(nP, false);
+    bool anyPressureFixed = false;
+    const fileName uFile = fileName("0")/mesh_.name()/"U";
+    const fileName pFile = fileName("0")/mesh_.name()/"p";
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatchVectorField& up = U_.boundaryField()[patchi];
+        const fvPatchScalarField& pp = p_.boundaryField()[patchi];
+        const word& name = mesh_.boundary()[patchi].name();
+        const word ut = up.type();
+        if (ut == "empty") uBC_[patchi] = velocityBC::empty;
+        else if (ut == "wedge") uBC_[patchi] = velocityBC::wedge;
+        else if (ut == "slip" || ut == "symmetryPlane" || ut == "symmetry")
+        {
+            uBC_[patchi] = velocityBC::slip;
+        }
+        else if (ut == "zeroGradient") uBC_[patchi] = velocityBC::zeroGradient;
+        else if (up.fixesValue()) uBC_[patchi] = velocityBC::fixedValue;
+        else
+        {
+            FatalErrorInFunction
+                << "Patch '" << name << "' in " << uFile << ": velocity"
+                << " condition type '" << ut << "' is not available for the"
+                << " ALE fluid; use a fixed value (fixedValue, noSlip,"
+                << " uniformFixedValue, flowRateInletVelocity),"
+                << " zeroGradient (an outlet with a fixed pressure), slip,"
+                << " symmetryPlane, wedge or empty" << exit(FatalError);
+        }
+        const word pt = pp.type();
+        if (pp.fixesValue())
+        {
+            pFixed_[patchi] = true;
+            anyPressureFixed = true;
+        }
+        else if
+        (
+            pt != "zeroGradient" && pt != "fixedFluxPressure"
+         && pt != "empty" && pt != "wedge" && pt != "symmetryPlane"
+         && pt != "symmetry" && pt != "slip"
+        )
+        {
+            FatalErrorInFunction
+                << "Patch '" << name << "' in " << pFile << ": pressure"
+                << " condition type '" << pt << "' is not available for the"
+                << " ALE fluid; use a fixed value (fixedValue,"
+                << " uniformFixedValue) or zeroGradient" << exit(FatalError);
+        }
+        if (uBC_[patchi] == velocityBC::zeroGradient && !pFixed_[patchi])
+        {
+            FatalErrorInFunction
+                << "Patch '" << name << "': U is zeroGradient in " << uFile
+                << " but p in " << pFile << " does not fix its value; an"
+                << " outlet needs a fixed pressure (fixedValue)"
+                << exit(FatalError);
+        }
+    }
+    if (set_.incompressible && !anyPressureFixed)
+    {
+        FatalErrorInFunction
+            << "Fluid region '" << mesh_.name() << "': incompressible with"
+            << " no patch of fixed pressure in " << pFile << ": the pressure"
+            << " level is undetermined; fix the pressure on an outlet or"
+            << " give a bulkModulus in constant/" << mesh_.name()
+            << "/fluidProperties" << exit(FatalError);
+    }
+}
+
+
+Foam::tmp<Foam::pointField>
+Foam::ALENavierStokes::motionPoints(scalar t) const
+{
+    tmp<pointField> tpts(new pointField(points00_));
+    if (set_.meshMotion != "oscillating") return tpts;
+    pointField& pts = tpts.ref();
+    const scalar a = Foam::sin(constant::mathematical::twoPi*t/set_.period);
+    const Vector<label>& gD = mesh_.geometricD();
+    forAll(pts, i)
+    {
+        scalar shape = a;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (gD[d] != 1) continue;
+            const scalar xi =
+                (points00_[i][d] - bbMin_[d])/(bbMax_[d] - bbMin_[d]);
+            shape *= Foam::sin(constant::mathematical::pi*xi);
+        }
+        pts[i] += shape*set_.amplitude;
+    }
+    return tpts;
+}
+
+
+void Foam::ALENavierStokes::computeMeshFluxes()
+{
+    const faceList& faces = mesh_.faces();
+    const pointField& pts = mesh_.points();
+    forAll(faces, f)
+    {
+        Fm_[f] = faces[f].sweptVol(points0_, pts)/dt_;
+    }
+}
+
+
+void Foam::ALENavierStokes::updateBoundaryValues()
+{
+    U_.correctBoundaryConditions();
+    p_.correctBoundaryConditions();
+    forAll(mesh_.boundary(), patchi)
+    {
+        uFixed_[patchi] = U_.boundaryField()[patchi];
+        pFixedValue_[patchi] = p_.boundaryField()[patchi];
+    }
+}
+
+
+void Foam::ALENavierStokes::computeRhieChowCoefficients()
+{
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const surfaceVectorField& Sf = mesh_.Sf();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    const surfaceScalarField& dc = mesh_.nonOrthDeltaCoeffs();
+    const scalarField& V = mesh_.V();
+    scalarField a(mesh_.nCells(), 0);
+    const scalar rho = set_.rho, mu = set_.mu;
+    forAll(own, f)
+    {
+        const label P = own[f], N = nei[f];
+        const scalar w = mesh_.weights()[f];
+        const vector ubar = w*cellU(x_, P) + (1 - w)*cellU(x_, N);
+        const scalar F = (ubar & Sf[f]) - Fm_[f];
+        a[P] += mu*magSf[f]*dc[f] + rho*max(F, 0.0);
+        a[N] += mu*magSf[f]*dc[f] + rho*max(-F, 0.0);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& fp = mesh_.boundary()[patchi];
+        const velocityBC bc = uBC_[patchi];
+        if (bc == velocityBC::empty || bc == velocityBC::wedge) continue;
+        const labelUList& fc = fp.faceCells();
+        const scalarField& dcb = fp.deltaCoeffs();
+        forAll(fp, i)
+        {
+            if (bc == velocityBC::fixedValue)
+            {
+                a[fc[i]] += mu*magSf.boundaryField()[patchi][i]*dcb[i];
+            }
+            const scalar F =
+                (cellU(x_, fc[i]) & Sf.boundaryField()[patchi][i])
+              - Fm_[fp.start() + i];
+            a[fc[i]] += rho*max(F, 0.0);
+        }
+    }
+    forAll(a, c)
+    {
+        if (!steady_) a[c] += rho*V[c]/dt_;
+        rAV_[c] = V[c]/max(a[c], VSMALL);
+    }
+}
+
+
+void Foam::ALENavierStokes::checkMeshQuality()
+{
+    const scalarField& V = mesh_.V();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& C = mesh_.C();
+    const vectorField& Sf = mesh_.Sf();
+    minVolumeRatio_ = GREAT;
+    label worstCell = -1;
+    forAll(V, c)
+    {
+        const scalar ratio = V[c]/Vstart_[c];
+        if (ratio < minVolumeRatio_)
+        {
+            minVolumeRatio_ = ratio;
+            worstCell = c;
+        }
+    }
+    maxNonOrth_ = 0;
+    label worstFace = -1;
+    forAll(own, f)
+    {
+        const vector d = C[nei[f]] - C[own[f]];
+        const scalar cosA = (d & Sf[f])/(mag(d)*mag(Sf[f]) + VSMALL);
+        const scalar angle =
+            Foam::acos(max(-1.0, min(1.0, cosA)))*180/constant::mathematical::pi;
+        if (angle > maxNonOrth_)
+        {
+            maxNonOrth_ = angle;
+            worstFace = f;
+        }
+    }
+    std::ostringstream os;
+    if (!(minVolumeRatio_ > 0))
+    {
+        os  << "fluid mesh of region " << mesh_.name() << ": cell "
+            << worstCell << " at " << C[worstCell].x() << ' '
+            << C[worstCell].y() << ' ' << C[worstCell].z()
+            << " turned inside out (volume " << V[worstCell] << ")";
+    }
+    else if (maxNonOrth_ > set_.maxNonOrthogonality)
+    {
+        const point& c = mesh_.Cf()[worstFace];
+        os  << "fluid mesh of region " << mesh_.name() << ": face "
+            << worstFace << " at " << c.x() << ' ' << c.y() << ' ' << c.z()
+            << " is " << maxNonOrth_ << " degrees non-orthogonal, beyond"
+            << " maxNonOrthogonality " << set_.maxNonOrthogonality
+            << " (constant/" << mesh_.name() << "/fluidProperties): the"
+            << " mesh motion is about to invert cells";
+    }
+    if (!os.str().empty())
+    {
+        throw form::inversionError(-1, os.str());
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::ALENavierStokes::volume() const
+{
+    return depth_*gSum(mesh_.V());
+}
+
+
+Foam::label Foam::ALENavierStokes::findCell(const point& pt) const
+{
+    return mesh_.findCell(pt);
+}
+
+
+Foam::scalar Foam::ALENavierStokes::patchFlux(const word& patch) const
+{
+    const label patchi = mesh_.boundary().findPatchID(patch);
+    if (patchi < 0) return 0;
+    const fvPatch& fp = mesh_.boundary()[patchi];
+    const labelUList& fc = fp.faceCells();
+    scalar q = 0;
+    forAll(fp, i)
+    {
+        const vector S = mesh_.Sf().boundaryField()[patchi][i];
+        vector ub = uFixed_[patchi][i];
+        if (uBC_[patchi] == velocityBC::zeroGradient) ub = cellU(x_, fc[i]);
+        else if (uBC_[patchi] != velocityBC::fixedValue) continue;
+        q += (ub & S) - Fm_[fp.start() + i];
+    }
+    return depth_*q;
+}
+
+
+std::string Foam::ALENavierStokes::describe() const
+{
+    std::ostringstream os;
+    os  << mesh_.nCells() << " cells, " << x_.size() << " unknowns ("
+        << D_ << " velocity components and the pressure per cell), rho "
+        << set_.rho << ", mu " << set_.mu << ", ";
+    if (set_.incompressible) os << "incompressible";
+    else os << "bulk modulus " << set_.bulkModulus;
+    os  << '\n' << (steady_ ? "steady" : "transient (Euler)")
+        << ", convection " << (upwind_ ? "upwind" : "linear")
+        << ", viscous flux " << (corrected_ ? "corrected" : "uncorrected")
+        << ", Rhie-Chow pressure-velocity coupling, mesh motion "
+        << set_.meshMotion;
+    return os.str();
+}
+
+
+std::string Foam::ALENavierStokes::report() const
+{
+    scalar uMax = 0, pMin = GREAT, pMax = -GREAT;
+    for (label c = 0; c < mesh_.nCells(); ++c)
+    {
+        uMax = max(uMax, mag(cellU(x_, c)));
+        pMin = min(pMin, x_(ip(c)));
+        pMax = max(pMax, x_(ip(c)));
+    }
+    std::ostringstream os;
+    os.precision(6);
+    os  << "max |U| = " << uMax << ", p in [" << pMin << ", " << pMax
+        << "], V = " << volume();
+    if (set_.meshMotion != "none")
+    {
+        os  << "; mesh: min V/V_start " << minVolumeRatio_
+            << ", max non-orthogonality " << maxNonOrth_ << " deg";
+    }
+    return os.str();
+}
+
+
+void Foam::ALENavierStokes::updateFields()
+{
+    forAll(U_, c)
+    {
+        U_[c] = cellU(x_, c);
+        p_[c] = x_(ip(c));
+    }
+    U_.correctBoundaryConditions();
+    p_.correctBoundaryConditions();
+}
+
+
+void Foam::ALENavierStokes::write(const word& timeName)
+{
+    updateFields();
+    U_.instance() = timeName;
+    p_.instance() = timeName;
+    U_.write();
+    p_.write();
+    if (set_.meshMotion != "none")
+    {
+        pointIOField pts
+        (
+            IOobject
+            (
+                "points", timeName, polyMesh::meshSubDir, mesh_,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            ),
+            mesh_.points()
+        );
+        pts.write();
+    }
+}
+
+
+void Foam::ALENavierStokes::beginIncrement
+(
+    double t0,
+    double t1,
+    const form::vecX&
+)
+{
+    t0_ = t0;
+    t1_ = t1;
+    dt_ = t1 - t0;
+    // Boundary values at t1 (time functions of the fields' conditions)
+    const label index = runTime_.timeIndex();
+    runTime_.setTime(t1, index);
+    if (set_.meshMotion != "none")
+    {
+        mesh_.movePoints(motionPoints(t1));
+        checkMeshQuality();
+    }
+    computeMeshFluxes();
+    updateFields();
+    updateBoundaryValues();
+    computeRhieChowCoefficients();
+}
+
+
+void Foam::ALENavierStokes::evaluate
+(
+    double,
+    const form::vecX& Us,
+    form::vecX&,
+    form::vecX& r,
+    std::vector<triplet>* K
+)
+{
+    const label nC = mesh_.nCells();
+    const label off = Us.size();
+    const scalar s = depth_;
+    const scalar rho = set_.rho, mu = set_.mu;
+    const scalar rK = set_.incompressible ? 0 : 1/set_.bulkModulus;
+    const auto m = [&](scalar p) { return rK > 0 ? Foam::exp(p*rK) : 1.0; };
+    r.setZero(x_.size());
+
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const surfaceVectorField& Sf = mesh_.Sf();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    const surfaceScalarField& w = mesh_.weights();
+    const surfaceScalarField& dc = mesh_.nonOrthDeltaCoeffs();
+    const surfaceVectorField& kv = mesh_.nonOrthCorrectionVectors();
+    const volVectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+
+    // Magnitudes of the terms per cell (the residual scale)
+    scalarField aM(nC, 0), aC(nC, 0);
+
+    // Current cell values
+    vectorField u(nC);
+    scalarField p(nC);
+    forAll(u, c)
+    {
+        u[c] = cellU(x_, c);
+        p[c] = x_(ip(c));
+    }
+
+    // Residual and Jacobian helpers (momentum residual -M, mass +C;
+    // K = -dr/dq = [dM/dq; -dC/dq])
+    const auto addM = [&](label P, const vector& v)
+    {
+        for (label k = 0; k < D_; ++k) r(iu(P, k)) -= s*v[cmp_[k]];
+    };
+    const auto addC = [&](label P, scalar c) { r(ip(P)) += s*c; };
+    const auto jMu = [&](label P, label Q, const tensor& A)
+    {
+        if (!K) return;
+        for (label k = 0; k < D_; ++k)
+        {
+            for (label l = 0; l < D_; ++l)
+            {
+                const scalar v = A(cmp_[k], cmp_[l]);
+                if (v != 0)
+                {
+                    K->emplace_back(off + iu(P, k), off + iu(Q, l), s*v);
+                }
+            }
+        }
+    };
+    const auto jMp = [&](label P, label Q, const vector& g)
+    {
+        if (!K) return;
+        for (label k = 0; k < D_; ++k)
+        {
+            const scalar v = g[cmp_[k]];
+            if (v != 0) K->emplace_back(off + iu(P, k), off + ip(Q), s*v);
+        }
+    };
+    const auto jCu = [&](label P, label Q, const vector& b)
+    {
+        if (!K) return;
+        for (label l = 0; l < D_; ++l)
+        {
+            const scalar v = b[cmp_[l]];
+            if (v != 0) K->emplace_back(off + ip(P), off + iu(Q, l), -s*v);
+        }
+    };
+    const auto jCp = [&](label P, label Q, scalar e)
+    {
+        if (K && e != 0) K->emplace_back(off + ip(P), off + ip(Q), -s*e);
+    };
+
+    // Boundary face maps of the velocity and pressure values
+    List<List<faceMap>> bmap(mesh_.boundary().size());
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& fp = mesh_.boundary()[patchi];
+        List<faceMap>& fm = bmap[patchi];
+        fm.setSize(fp.size());
+        const velocityBC bc = uBC_[patchi];
+        if (bc == velocityBC::empty) continue;
+        const scalarField& dcb = fp.deltaCoeffs();
+        const vectorField nf(fp.nf());
+        forAll(fp, i)
+        {
+            faceMap& f = fm[i];
+            switch (bc)
+            {
+                case velocityBC::fixedValue:
+                    f.c = uFixed_[patchi][i];
+                    f.Ts = -dcb[i]*tensor(I);
+                    f.cs = dcb[i]*uFixed_[patchi][i];
+                    break;
+                case velocityBC::zeroGradient:
+                    f.T = I;
+                    break;
+                case velocityBC::slip:
+                    f.T = I - sqr(nf[i]);
+                    f.Ts = -dcb[i]*sqr(nf[i]);
+                    break;
+                case velocityBC::wedge:
+                {
+                    const wedgeFvPatch& wp = refCast<const wedgeFvPatch>(fp);
+                    f.T = wp.faceT();
+                    f.Ts = 0.5*dcb[i]*(wp.cellT() - tensor(I));
+                    break;
+                }
+                default:
+                    break;
+            }
+        }
+    }
+    const auto pFace = [&](label patchi, label i, label P)
+    {
+        return pFixed_[patchi] ? pFixedValue_[patchi][i] : p[P];
+    };
+
+    // Gauss gradient stencils (internal faces) and the boundary parts:
+    // grad(phi)_P = sum_Q G_PQ phi_Q + boundary terms
+    std::vector<stencil> G(nC);
+    forAll(own, f)
+    {
+        const label P = own[f], N = nei[f];
+        G[P].push_back({P, w[f]*Sf[f]/V[P]});
+        G[P].push_back({N, (1 - w[f])*Sf[f]/V[P]});
+        G[N].push_back({P, -w[f]*Sf[f]/V[N]});
+        G[N].push_back({N, -(1 - w[f])*Sf[f]/V[N]});
+    }
+    // Pressure gradient: stencil with the boundary faces of unfixed p,
+    // and the constant part from fixed pressures
+    std::vector<stencil> Gp(G);
+    vectorField gp0(nC, Zero);
+    // Velocity gradient: boundary parts sum_b S_b (T u_P + c)/V per cell
+    List<DynamicList<label>> cellBFaces(nC);   // (patch, face) pairs packed
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& fp = mesh_.boundary()[patchi];
+        if (uBC_[patchi] == velocityBC::empty) continue;
+        const labelUList& fc = fp.faceCells();
+        forAll(fp, i)
+        {
+            const label P = fc[i];
+            const vector& Sb = Sf.boundaryField()[patchi][i];
+            if (pFixed_[patchi]) gp0[P] += pFixedValue_[patchi][i]*Sb/V[P];
+            else Gp[P].push_back({P, Sb/V[P]});
+            cellBFaces[P].append(patchi);
+            cellBFaces[P].append(i);
+        }
+    }
+    vectorField gradP(gp0);
+    tensorField gradU(nC, Zero);
+    for (label P = 0; P < nC; ++P)
+    {
+        for (const stencilEntry& e : Gp[P]) gradP[P] += e.coeff*p[e.cell];
+        for (const stencilEntry& e : G[P]) gradU[P] += e.coeff*u[e.cell];
+        const DynamicList<label>& bf = cellBFaces[P];
+        for (label j = 0; j < bf.size(); j += 2)
+        {
+            const faceMap& f = bmap[bf[j]][bf[j + 1]];
+            const vector& Sb = Sf.boundaryField()[bf[j]][bf[j + 1]];
+            gradU[P] += Sb*((f.T & u[P]) + f.c)/V[P];
+        }
+    }
+    // d(k . gradU_P)/du_P from the boundary faces of P
+    const auto boundaryGradT = [&](label P, const vector& k)
+    {
+        tensor A = Zero;
+        const DynamicList<label>& bf = cellBFaces[P];
+        for (label j = 0; j < bf.size(); j += 2)
+        {
+            const faceMap& f = bmap[bf[j]][bf[j + 1]];
+            const vector& Sb = Sf.boundaryField()[bf[j]][bf[j + 1]];
+            A += (k & Sb)/V[P]*f.T;
+        }
+        return A;
+    };
+
+    // dF/dp of a flux with a Rhie-Chow term coef (p_N - p_P - d . gbar):
+    // the entries of -d(c)/dp
+    std::vector<std::pair<label, scalar>> dFdp;
+    dFdp.reserve(64);
+
+    // Internal faces
+    forAll(own, f)
+    {
+        const label P = own[f], N = nei[f];
+        const vector& S = Sf[f];
+        const scalar wf = w[f];
+        const vector d = C[N] - C[P];
+        const scalar pbar = wf*p[P] + (1 - wf)*p[N];
+        const vector ubar = wf*u[P] + (1 - wf)*u[N];
+        const scalar Df = wf*rAV_[P] + (1 - wf)*rAV_[N];
+        const scalar coef = Df*magSf[f]/mag(d);
+        const vector gbar = wf*gradP[P] + (1 - wf)*gradP[N];
+        const scalar cRC = coef*(p[N] - p[P] - (gbar & d));
+        const scalar F = (ubar & S) - cRC - Fm_[f];
+        const scalar lam = upwind_ ? (F >= 0 ? 1.0 : 0.0) : wf;
+        const vector uc = lam*u[P] + (1 - lam)*u[N];
+
+        // Momentum: convection, pressure, viscous
+        const vector snGrad =
+            dc[f]*(u[N] - u[P])
+          + (corrected_ ? (kv[f] & (wf*gradU[P] + (1 - wf)*gradU[N])) : vector::zero);
+        const vector visc = -mu*magSf[f]*snGrad;
+        const vector pres = pbar*S;
+        if (steady_)
+        {
+            addM(P, rho*F*(uc - u[P]) + pres + visc);
+            addM(N, -rho*F*(uc - u[N]) - pres - visc);
+        }
+        else
+        {
+            addM(P, rho*F*uc + pres + visc);
+            addM(N, -rho*F*uc - pres - visc);
+        }
+        // Mass
+        const scalar mf = m(pbar);
+        addC(P, mf*F);
+        addC(N, -mf*F);
+        {
+            const scalar a = mag(rho*F*uc) + mag(pres) + mag(visc);
+            aM[P] += a;
+            aM[N] += a;
+            aC[P] += mag(mf*F) + mag(ubar & S);
+            aC[N] += mag(mf*F) + mag(ubar & S);
+        }
+
+        if (!K) continue;
+
+        // dF/du and dF/dp
+        const vector dFduP = wf*S, dFduN = (1 - wf)*S;
+        dFdp.clear();
+        dFdp.push_back({P, coef});
+        dFdp.push_back({N, -coef});
+        for (const stencilEntry& e : Gp[P])
+        {
+            dFdp.push_back({e.cell, coef*wf*(d & e.coeff)});
+        }
+        for (const stencilEntry& e : Gp[N])
+        {
+            dFdp.push_back({e.cell, coef*(1 - wf)*(d & e.coeff)});
+        }
+
+        // Convection
+        if (steady_)
+        {
+            const vector aP = uc - u[P], aN = uc - u[N];
+            jMu(P, P, rho*(aP*dFduP + F*(lam - 1)*tensor(I)));
+            jMu(P, N, rho*(aP*dFduN + F*(1 - lam)*tensor(I)));
+            jMu(N, P, -rho*(aN*dFduP + F*lam*tensor(I)));
+            jMu(N, N, -rho*(aN*dFduN - F*lam*tensor(I)));
+            for (const auto& e : dFdp)
+            {
+                jMp(P, e.first, rho*aP*e.second);
+                jMp(N, e.first, -rho*aN*e.second);
+            }
+        }
+        else
+        {
+            const tensor AP = rho*(uc*dFduP + F*lam*tensor(I));
+            const tensor AN = rho*(uc*dFduN + F*(1 - lam)*tensor(I));
+            jMu(P, P, AP);
+            jMu(P, N, AN);
+            jMu(N, P, -AP);
+            jMu(N, N, -AN);
+            for (const auto& e : dFdp)
+            {
+                jMp(P, e.first, rho*uc*e.second);
+                jMp(N, e.first, -rho*uc*e.second);
+            }
+        }
+        // Pressure
+        jMp(P, P, wf*S);
+        jMp(P, N, (1 - wf)*S);
+        jMp(N, P, -wf*S);
+        jMp(N, N, -(1 - wf)*S);
+        // Viscous
+        const scalar cv = mu*magSf[f];
+        jMu(P, P, cv*dc[f]*tensor(I));
+        jMu(P, N, -cv*dc[f]*tensor(I));
+        jMu(N, P, -cv*dc[f]*tensor(I));
+        jMu(N, N, cv*dc[f]*tensor(I));
+        if (corrected_)
+        {
+            const vector& k = kv[f];
+            for (const stencilEntry& e : G[P])
+            {
+                const scalar a = cv*wf*(k & e.coeff);
+                jMu(P, e.cell, -a*tensor(I));
+                jMu(N, e.cell, a*tensor(I));
+            }
+            for (const stencilEntry& e : G[N])
+            {
+                const scalar a = cv*(1 - wf)*(k & e.coeff);
+                jMu(P, e.cell, -a*tensor(I));
+                jMu(N, e.cell, a*tensor(I));
+            }
+            const tensor BP = cv*wf*boundaryGradT(P, k);
+            const tensor BN = cv*(1 - wf)*boundaryGradT(N, k);
+            jMu(P, P, -BP);
+            jMu(N, P, BP);
+            jMu(P, N, -BN);
+            jMu(N, N, BN);
+        }
+        // Mass
+        jCu(P, P, mf*dFduP);
+        jCu(P, N, mf*dFduN);
+        jCu(N, P, -mf*dFduP);
+        jCu(N, N, -mf*dFduN);
+        for (const auto& e : dFdp)
+        {
+            jCp(P, e.first, mf*e.second);
+            jCp(N, e.first, -mf*e.second);
+        }
+        const scalar dm = mf*rK*F;
+        jCp(P, P, dm*wf);
+        jCp(P, N, dm*(1 - wf));
+        jCp(N, P, -dm*wf);
+        jCp(N, N, -dm*(1 - wf));
+    }
+
+    // Boundary faces
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& fp = mesh_.boundary()[patchi];
+        const velocityBC bc = uBC_[patchi];
+        if (bc == velocityBC::empty) continue;
+        const labelUList& fc = fp.faceCells();
+        const scalarField& dcb = fp.deltaCoeffs();
+        const vectorField delta(fp.delta());
+        const bool pfix = pFixed_[patchi];
+        forAll(fp, i)
+        {
+            const label P = fc[i];
+            const faceMap& fm = bmap[patchi][i];
+            const vector& S = Sf.boundaryField()[patchi][i];
+            const scalar magS = magSf.boundaryField()[patchi][i];
+            const scalar pb = pFace(patchi, i, P);
+            const vector ub = (fm.T & u[P]) + fm.c;
+
+            // Pressure and viscous forces
+            addM(P, pb*S - mu*magS*((fm.Ts & u[P]) + fm.cs));
+            aM[P] += mag(pb*S) + mag(mu*magS*((fm.Ts & u[P]) + fm.cs));
+            if (K)
+            {
+                if (!pfix) jMp(P, P, S);
+                jMu(P, P, -mu*magS*fm.Ts);
+            }
+            // No flux through wedge faces (the rotated cell velocity lies
+            // in the wedge plane, which moves within itself)
+            if (bc == velocityBC::wedge) continue;
+
+            // Flux relative to the face; Rhie-Chow against a fixed
+            // pressure at an outlet
+            const bool rc = bc == velocityBC::zeroGradient && pfix;
+            scalar cRC = 0, coef = 0;
+            if (rc)
+            {
+                coef = rAV_[P]*magS*dcb[i];
+                cRC = coef*(pb - p[P] - (gradP[P] & delta[i]));
+            }
+            const scalar F = (ub & S) - cRC - Fm_[fp.start() + i];
+            const vector uconv = steady_ ? ub - u[P] : ub;
+            addM(P, rho*F*uconv);
+            const scalar mb = m(pb);
+            addC(P, mb*F);
+            aM[P] += mag(rho*F*ub);
+            aC[P] += mag(mb*F) + mag(ub & S);
+
+            if (!K) continue;
+            const vector dFdu = S & fm.T;
+            dFdp.clear();
+            if (rc)
+            {
+                dFdp.push_back({P, coef});
+                for (const stencilEntry& e : Gp[P])
+                {
+                    dFdp.push_back({e.cell, coef*(delta[i] & e.coeff)});
+                }
+            }
+            const tensor Tc = steady_ ? fm.T - tensor(I) : fm.T;
+            jMu(P, P, rho*(uconv*dFdu + F*Tc));
+            for (const auto& e : dFdp)
+            {
+                jMp(P, e.first, rho*uconv*e.second);
+                jCp(P, e.first, mb*e.second);
+            }
+            jCu(P, P, mb*dFdu);
+            if (!pfix) jCp(P, P, mb*rK*F);
+        }
+    }
+
+    // Cell terms: time derivative, mass storage
+    const scalar rdt = 1/dt_;
+    for (label P = 0; P < nC; ++P)
+    {
+        if (!steady_)
+        {
+            addM(P, rho*(V[P]*u[P] - V0_[P]*cellU(x0_, P))*rdt);
+            jMu(P, P, rho*V[P]*rdt*tensor(I));
+        }
+        const scalar p0 = x0_(ip(P));
+        addC(P, (m(p[P])*V[P] - m(p0)*V0_[P])*rdt);
+        jCp(P, P, m(p[P])*rK*V[P]*rdt);
+        aC[P] += mag(m(p[P])*V[P] - m(p0)*V0_[P])*rdt;
+    }
+    scale_ = s*Foam::sqrt(sumSqr(aM) + sumSqr(aC));
+}
+
+
+void Foam::ALENavierStokes::commit(const form::vecX&)
+{
+    x0_ = x_;
+    points0_ = mesh_.points();
+    V0_ = mesh_.V();
+}
+
+
+void Foam::ALENavierStokes::revert()
+{
+    x_ = x0_;
+    if (set_.meshMotion != "none")
+    {
+        mesh_.movePoints(points0_);
+    }
+}
+
+
+std::string Foam::ALENavierStokes::unknownName(int j) const
+{
+    const label c = j/(D_ + 1), k = j % (D_ + 1);
+    const char* names = "xyz";
+    std::ostringstream os;
+    os  << mesh_.name() << " cell " << c << ' '
+        << (k == D_ ? std::string("p") : std::string("U") + names[cmp_[k]]);
+    return os.str();
+}
+
+
+std::vector<double> Foam::ALENavierStokes::state() const
+{
+    std::vector<double> s(x_.data(), x_.data() + x_.size());
+    s.insert(s.end(), x0_.data(), x0_.data() + x0_.size());
+    return s;
+}
+
+
+void Foam::ALENavierStokes::setState(const std::vector<double>& s)
+{
+    const std::size_t n = x_.size();
+    if (s.size() != 2*n)
+    {
+        throw form::numericalError
+        (
+            "ALENavierStokes::setState: " + std::to_string(s.size())
+          + " values, not " + std::to_string(2*n)
+        );
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        x_(i) = s[i];
+        x0_(i) = s[n + i];
+    }
+}
+
+
+// ************************************************************************* //
