@@ -89,11 +89,14 @@ Foam::ALENavierStokes::ALENavierStokes
         {
             const wedgePolyPatch& wp =
                 refCast<const wedgePolyPatch>(fp.patch());
-            // Each wedge plane is turned by half the wedge angle from
-            // the centre plane: cos(angle/2) = n . centreNormal
+            // Each wedge plane is turned by half the wedge angle a from
+            // the centre plane: cos(a/2) = n . centreNormal. A face at
+            // radius r spans the chord 2 r sin(a/2): the full ring is
+            // pi/sin(a/2) wedges (exact for fluxes and volumes of the
+            // planar wedge cells)
             const scalar half =
                 Foam::acos(min(1.0, mag(wp.n() & wp.centreNormal())));
-            depth_ = constant::mathematical::pi/half;
+            depth_ = constant::mathematical::pi/Foam::sin(half);
             wedge = true;
             break;
         }
@@ -196,6 +199,24 @@ Foam::ALENavierStokes::ALENavierStokes
 }
 
 
+// * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::ALENavierStokes::fixedVelocityTypes()
+{
+    return
+    {
+        "fixedValue", "noSlip", "uniformFixedValue", "flowRateInletVelocity",
+        "surfaceNormalFixedValue"
+    };
+}
+
+
+Foam::wordList Foam::ALENavierStokes::fixedPressureTypes()
+{
+    return {"fixedValue", "uniformFixedValue"};
+}
+
+
 // * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
 
 Foam::vector Foam::ALENavierStokes::cellU(const form::vecX& x, label c) const
@@ -212,14 +233,22 @@ void Foam::ALENavierStokes::classifyPatches()
     uBC_.setSize(nP);
     pFixed_.setSize(nP, false);
     bool anyPressureFixed = false;
-    const fileName uFile = fileName("0")/mesh_.name()/"U";
-    const fileName pFile = fileName("0")/mesh_.name()/"p";
+    // The files as the user sees them (unquoted in messages)
+    const std::string uFile = "0/" + mesh_.name() + "/U";
+    const std::string pFile = "0/" + mesh_.name() + "/p";
+    const auto names = [](const wordList& w)
+    {
+        std::string s;
+        for (const word& n : w) s += (s.empty() ? "" : " ") + n;
+        return s;
+    };
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatchVectorField& up = U_.boundaryField()[patchi];
         const fvPatchScalarField& pp = p_.boundaryField()[patchi];
         const word& name = mesh_.boundary()[patchi].name();
         const word ut = up.type();
+        const word pt = pp.type();
         if (ut == "empty") uBC_[patchi] = velocityBC::empty;
         else if (ut == "wedge") uBC_[patchi] = velocityBC::wedge;
         else if (ut == "slip" || ut == "symmetryPlane" || ut == "symmetry")
@@ -227,19 +256,20 @@ void Foam::ALENavierStokes::classifyPatches()
             uBC_[patchi] = velocityBC::slip;
         }
         else if (ut == "zeroGradient") uBC_[patchi] = velocityBC::zeroGradient;
-        else if (up.fixesValue()) uBC_[patchi] = velocityBC::fixedValue;
+        else if (fixedVelocityTypes().found(ut))
+        {
+            uBC_[patchi] = velocityBC::fixedValue;
+        }
         else
         {
             FatalErrorInFunction
-                << "Patch '" << name << "' in " << uFile << ": velocity"
+                << "Patch '" << name << "' in " << uFile.c_str() << ": velocity"
                 << " condition type '" << ut << "' is not available for the"
-                << " ALE fluid; use a fixed value (fixedValue, noSlip,"
-                << " uniformFixedValue, flowRateInletVelocity),"
-                << " zeroGradient (an outlet with a fixed pressure), slip,"
+                << " ALE fluid; use a fixed value (" << names(fixedVelocityTypes())
+                << "), zeroGradient (an outlet with a fixed pressure), slip,"
                 << " symmetryPlane, wedge or empty" << exit(FatalError);
         }
-        const word pt = pp.type();
-        if (pp.fixesValue())
+        if (fixedPressureTypes().found(pt))
         {
             pFixed_[patchi] = true;
             anyPressureFixed = true;
@@ -252,16 +282,16 @@ void Foam::ALENavierStokes::classifyPatches()
         )
         {
             FatalErrorInFunction
-                << "Patch '" << name << "' in " << pFile << ": pressure"
+                << "Patch '" << name << "' in " << pFile.c_str() << ": pressure"
                 << " condition type '" << pt << "' is not available for the"
-                << " ALE fluid; use a fixed value (fixedValue,"
-                << " uniformFixedValue) or zeroGradient" << exit(FatalError);
+                << " ALE fluid; use a fixed value (" << names(fixedPressureTypes())
+                << ") or zeroGradient" << exit(FatalError);
         }
         if (uBC_[patchi] == velocityBC::zeroGradient && !pFixed_[patchi])
         {
             FatalErrorInFunction
-                << "Patch '" << name << "': U is zeroGradient in " << uFile
-                << " but p in " << pFile << " does not fix its value; an"
+                << "Patch '" << name << "': U is zeroGradient in " << uFile.c_str()
+                << " but p in " << pFile.c_str() << " does not fix its value; an"
                 << " outlet needs a fixed pressure (fixedValue)"
                 << exit(FatalError);
         }
@@ -270,7 +300,7 @@ void Foam::ALENavierStokes::classifyPatches()
     {
         FatalErrorInFunction
             << "Fluid region '" << mesh_.name() << "': incompressible with"
-            << " no patch of fixed pressure in " << pFile << ": the pressure"
+            << " no patch of fixed pressure in " << pFile.c_str() << ": the pressure"
             << " level is undetermined; fix the pressure on an outlet or"
             << " give a bulkModulus in constant/" << mesh_.name()
             << "/fluidProperties" << exit(FatalError);
@@ -445,17 +475,12 @@ Foam::label Foam::ALENavierStokes::findCell(const point& pt) const
 Foam::scalar Foam::ALENavierStokes::patchFlux(const word& patch) const
 {
     const label patchi = mesh_.boundary().findPatchID(patch);
-    if (patchi < 0) return 0;
+    if (patchi < 0 || Fb_.empty()) return 0;
     const fvPatch& fp = mesh_.boundary()[patchi];
-    const labelUList& fc = fp.faceCells();
     scalar q = 0;
     forAll(fp, i)
     {
-        const vector S = mesh_.Sf().boundaryField()[patchi][i];
-        vector ub = uFixed_[patchi][i];
-        if (uBC_[patchi] == velocityBC::zeroGradient) ub = cellU(x_, fc[i]);
-        else if (uBC_[patchi] != velocityBC::fixedValue) continue;
-        q += (ub & S) - Fm_[fp.start() + i];
+        q += Fb_[fp.start() + i - mesh_.nInternalFaces()];
     }
     return depth_*q;
 }
@@ -576,6 +601,8 @@ void Foam::ALENavierStokes::evaluate
     const scalar rK = set_.incompressible ? 0 : 1/set_.bulkModulus;
     const auto m = [&](scalar p) { return rK > 0 ? Foam::exp(p*rK) : 1.0; };
     r.setZero(x_.size());
+    Fb_.setSize(mesh_.nFaces() - mesh_.nInternalFaces());
+    Fb_ = 0;
 
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
@@ -934,6 +961,7 @@ void Foam::ALENavierStokes::evaluate
                 cRC = coef*(pb - p[P] - (gradP[P] & delta[i]));
             }
             const scalar F = (ub & S) - cRC - Fm_[fp.start() + i];
+            Fb_[fp.start() + i - mesh_.nInternalFaces()] = F;
             const vector uconv = steady_ ? ub - u[P] : ub;
             addM(P, rho*F*uconv);
             const scalar mb = m(pb);
