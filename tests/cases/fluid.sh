@@ -36,31 +36,6 @@ runFluid()
     )
 }
 
-# residualOrder <log>: Newton's order from the residual norms |r| of each
-# step: q = log(r+/r)/log(r/r-) for the last decreasing triple whose
-# smallest member is above 1e-11 of the step's first residual (the
-# fluid's residual reaches round-off, ~1e-14 of it, in one more
-# iteration), the median over the steps
-residualOrder()
-{
-    awk '
-    /^Step / { flush(); next }
-    match($0, /iter +[0-9]+ +\|r\| [0-9.eE+-]+/) {
-        s = substr($0, RSTART, RLENGTH); sub(/.*\|r\| /, "", s); e[n++] = s + 0
-    }
-    function flush(   k, q) {
-        q = ""
-        for (k = 1; k + 1 < n; ++k) {
-            if (e[k+1] > 1e-11*e[0] && e[k+1] < e[k] && e[k] < e[k-1])
-                q = log(e[k+1]/e[k])/log(e[k]/e[k-1])
-        }
-        if (q != "") print q
-        n = 0
-    }
-    END { flush() }' "$1" \
-    | sort -g | awk '{ v[NR] = $1 } END { print (NR ? v[int((NR + 1)/2)] : "none") }'
-}
-
 # tangentError <log>: the largest relative error of the tangent checks
 tangentError()
 {

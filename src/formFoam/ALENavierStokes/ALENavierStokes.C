@@ -206,7 +206,7 @@ Foam::wordList Foam::ALENavierStokes::fixedVelocityTypes()
     return
     {
         "fixedValue", "noSlip", "uniformFixedValue", "flowRateInletVelocity",
-        "surfaceNormalFixedValue"
+        "surfaceNormalFixedValue", "fixedProfile"
     };
 }
 
@@ -486,6 +486,20 @@ Foam::scalar Foam::ALENavierStokes::patchFlux(const word& patch) const
 }
 
 
+Foam::vector Foam::ALENavierStokes::patchForce(const word& patch) const
+{
+    const label patchi = mesh_.boundary().findPatchID(patch);
+    if (patchi < 0 || Fw_.empty()) return Zero;
+    const fvPatch& fp = mesh_.boundary()[patchi];
+    vector F = Zero;
+    forAll(fp, i)
+    {
+        F += Fw_[fp.start() + i - mesh_.nInternalFaces()];
+    }
+    return depth_*F;
+}
+
+
 std::string Foam::ALENavierStokes::describe() const
 {
     std::ostringstream os;
@@ -603,6 +617,8 @@ void Foam::ALENavierStokes::evaluate
     r.setZero(x_.size());
     Fb_.setSize(mesh_.nFaces() - mesh_.nInternalFaces());
     Fb_ = 0;
+    Fw_.setSize(Fb_.size());
+    Fw_ = Zero;
 
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
@@ -940,7 +956,9 @@ void Foam::ALENavierStokes::evaluate
             const vector ub = (fm.T & u[P]) + fm.c;
 
             // Pressure and viscous forces
-            addM(P, pb*S - mu*magS*((fm.Ts & u[P]) + fm.cs));
+            const vector wallForce = pb*S - mu*magS*((fm.Ts & u[P]) + fm.cs);
+            addM(P, wallForce);
+            Fw_[fp.start() + i - mesh_.nInternalFaces()] = wallForce;
             aM[P] += mag(pb*S) + mag(mu*magS*((fm.Ts & u[P]) + fm.cs));
             if (K)
             {

@@ -380,6 +380,12 @@ Foam::scalar Foam::fluidRegion::flowRate(const word& patch) const
 }
 
 
+Foam::vector Foam::fluidRegion::force(const word& patch) const
+{
+    return ale_ ? ale_->patchForce(patch) : vector::zero;
+}
+
+
 bool Foam::fluidRegion::hasPatch(const word& patch) const
 {
     return ale_ && mesh_->boundary().findPatchID(patch) >= 0;

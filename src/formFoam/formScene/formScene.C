@@ -599,6 +599,21 @@ void Foam::formScene::readSummary()
                     << "'" << exit(FatalIOError);
             }
         }
+        else if (fluid_ && fluid_->ALE() && type == "fluidForce")
+        {
+            keys.append(wordList{"patches", "component"});
+            for (const word& patch : ed.get<wordList>("patches"))
+            {
+                if (!fluid_->hasPatch(patch))
+                {
+                    FatalIOErrorInFunction(ed)
+                        << "Entry 'patches' in " << ed.name() << ": '"
+                        << patch << "' is not a patch of fluid region '"
+                        << fluid_->name() << "'" << exit(FatalIOError);
+                }
+            }
+            vectorComponent(ed.get<word>("component"), ed);
+        }
         else if (fluid_ && type == "fluidVolume")
         {}
         else if (fluid_ && !fluid_->ALE() && type == "injectedVolume")
@@ -657,7 +672,8 @@ void Foam::formScene::readSummary()
                 << (
                        !fluid_ ? ""
                      : fluid_->ALE()
-                     ? " fluidPressure fluidVelocity fluidFlowRate fluidVolume"
+                     ? " fluidPressure fluidVelocity fluidFlowRate fluidForce"
+                       " fluidVolume"
                      : " fluidPressure fluidVolume injectedVolume"
                    )
                 << exit(FatalIOError);
@@ -852,6 +868,16 @@ Foam::scalar Foam::formScene::evaluateFluid
     if (type == "fluidVolume") return fluid_->volume();
     if (type == "injectedVolume") return fluid_->injectedVolume(summaryTime_);
     if (type == "fluidFlowRate") return fluid_->flowRate(ed.get<word>("patch"));
+    if (type == "fluidForce")
+    {
+        const direction d = vectorComponent(ed.get<word>("component"), ed);
+        scalar F = 0;
+        for (const word& patch : ed.get<wordList>("patches"))
+        {
+            F += fluid_->force(patch)[d];
+        }
+        return F;
+    }
     if (type == "fluidPressure" && !fluid_->ALE()) return fluid_->pressure();
     // A point of the fluid mesh
     const point pt = ed.get<point>("point");
