@@ -36,6 +36,12 @@ runFluid()
     )
 }
 
+# orderShortfall <q> <error h> <error h/2>: q minus the observed order
+orderShortfall()
+{
+    awk -v q="$1" -v a="$2" -v b="$3" 'BEGIN { print q - log(a/b)/log(2) }'
+}
+
 # tangentError <log>: the largest relative error of the tangent checks
 tangentError()
 {
@@ -69,7 +75,7 @@ e2=$($check channel "$work/ch2" 1 100 20 10 1 1 9)
 checkBelow "channel: outlet profile vs 6 U y(h-y)/h^2, 10 cells across (rel. to u_max)" "$e1" 0.015
 checkBelow "channel: outlet profile, 20 cells across" "$e2" 0.004
 checkBelow "channel: profile error second order [2 - log2(e10/e20) < 0.2]" \
-    "$(awk -v a="$e1" -v b="$e2" 'BEGIN { print 2 - log(a/b)/log(2) }')" 0.2
+    "$(orderShortfall 2 "$e1" "$e2")" 0.2
 g=$(awk -v a="$(summaryValue "$work/ch2" pressureAt4)" -v b="$(summaryValue "$work/ch2" pressureAt8)" 'BEGIN { print (a - b)/4 }')
 checkClose "channel: developed pressure gradient vs 12 mu U/h^2 = 1.2" "$g" 1.2 0.01
 
@@ -121,7 +127,7 @@ checkBelow "pipe: profile vs dp/(4 mu L) (R^2 - r^2), 10 cells (rel. to the axis
 # error is second order
 checkBelow "pipe: profile, 20 cells" "$e2" 0.0035
 checkBelow "pipe: profile error decreases at least at order 0.6 (axis cell) [0.6 - log2(e10/e20) < 0]" \
-    "$(awk -v a="$e1" -v b="$e2" 'BEGIN { print 0.6 - log(a/b)/log(2) }')" 0
+    "$(orderShortfall 0.6 "$e1" "$e2")" 0
 g=$(awk -v a="$(summaryValue "$work/pp1" pressureAt4)" -v b="$(summaryValue "$work/pp1" pressureAt8)" 'BEGIN { print (a - b)/4 }')
 checkClose "pipe: pressure gradient dp/L = 3.2" "$g" 3.2 1e-6
 
@@ -136,7 +142,7 @@ read -r p2 u2 <<< "$($check radial "$work/rf2" 1 48 0.5 2 1 1)"
 checkBelow "radial flow: p(r) - p(r_mid) vs rho c^2/2 (1/r_mid^2 - 1/r^2), 24 cells (rel. to the range)" "$p1" 0.01
 checkBelow "radial flow: u_r vs c/r, 24 cells (rel. to c/r1)" "$u1" 0.005
 checkBelow "radial flow: pressure error second order [2 - log2(e24/e48) < 0.3]" \
-    "$(awk -v a="$p1" -v b="$p2" 'BEGIN { print 2 - log(a/b)/log(2) }')" 0.3
+    "$(orderShortfall 2 "$p1" "$p2")" 0.3
 qr=$(summaryValue "$work/rf1" outletFlowRate)
 checkClose "radial flow: outflow of the full ring 2 pi r1 H u(r1) = pi (the wedge's chords scaled to the ring)" "$qr" \
     "$(awk 'BEGIN { print atan2(0, -1) }')" 1e-9

@@ -25,6 +25,19 @@ struct stencilEntry
 
 using stencil = std::vector<stencilEntry>;
 
+//- The leading words of a scheme entry ("Gauss linear corrected")
+wordList schemeWords(ITstream& is)
+{
+    wordList w;
+    while (!is.eof())
+    {
+        token t(is);
+        if (!t.isWord()) break;
+        w.append(t.wordToken());
+    }
+    return w;
+}
+
 //- The representation of a boundary face value and normal gradient of the
 //  velocity as affine maps of the cell velocity:
 //      u_b = T u_P + c,   snGrad_b = Ts u_P + cs
@@ -125,14 +138,7 @@ Foam::ALENavierStokes::ALENavierStokes
                 << ddt << "' is not available for the ALE fluid; use Euler"
                 << " (transient) or steadyState" << exit(FatalIOError);
         }
-        ITstream& is = mesh_.divScheme("div(phi,U)");
-        wordList w;
-        while (!is.eof())
-        {
-            token t(is);
-            if (t.isWord()) w.append(t.wordToken());
-            else break;
-        }
+        const wordList w = schemeWords(mesh_.divScheme("div(phi,U)"));
         if (w.size() != 2 || w[0] != "Gauss" || (w[1] != "linear" && w[1] != "upwind"))
         {
             FatalIOErrorInFunction(mesh_.schemesDict())
@@ -142,14 +148,8 @@ Foam::ALENavierStokes::ALENavierStokes
                 << exit(FatalIOError);
         }
         upwind_ = w[1] == "upwind";
-        ITstream& ls = mesh_.laplacianScheme("laplacian(mu,U)");
-        wordList lw;
-        while (!ls.eof())
-        {
-            token t(ls);
-            if (t.isWord()) lw.append(t.wordToken());
-            else break;
-        }
+        const wordList lw =
+            schemeWords(mesh_.laplacianScheme("laplacian(mu,U)"));
         if
         (
             lw.size() != 3 || lw[0] != "Gauss" || lw[1] != "linear"

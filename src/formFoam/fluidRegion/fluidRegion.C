@@ -50,6 +50,29 @@ Foam::solidRegion& findSolid
     return solids[0];
 }
 
+//- bulkModulus: a positive number, or 'incompressible' (infinity)
+Foam::scalar readBulkModulus
+(
+    const Foam::dictionary& dict,
+    const Foam::fileName& file
+)
+{
+    using namespace Foam;
+    ITstream& is = dict.lookup("bulkModulus");
+    const token t(is);
+    if (t.isWord() && t.wordToken() == "incompressible")
+    {
+        return std::numeric_limits<scalar>::infinity();
+    }
+    if (!t.isNumber() || !(t.number() > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'bulkModulus' in " << file << " must be a positive"
+            << " number or 'incompressible', got " << t << exit(FatalIOError);
+    }
+    return t.number();
+}
+
 } // anonymous namespace
 
 
@@ -157,25 +180,7 @@ Foam::fluidRegion::fluidRegion
     }
 
     // The fluid: bulk modulus (or incompressible), initial volume
-    {
-        ITstream& is = dict_.lookup("bulkModulus");
-        const token t(is);
-        if (t.isWord() && t.wordToken() == "incompressible")
-        {
-            spec.bulkModulus = std::numeric_limits<double>::infinity();
-        }
-        else if (t.isNumber() && t.number() > 0)
-        {
-            spec.bulkModulus = t.number();
-        }
-        else
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Entry 'bulkModulus' in " << file << " must be a"
-                << " positive number or 'incompressible', got " << t
-                << exit(FatalIOError);
-        }
-    }
+    spec.bulkModulus = readBulkModulus(dict_, file);
     spec.initialVolume = dict_.get<scalar>("initialVolume");
     if (!(spec.initialVolume > 0))
     {
@@ -268,26 +273,9 @@ void Foam::fluidRegion::buildALE
     };
     set.rho = positive("rho");
     set.mu = positive("mu");
-    {
-        ITstream& is = dict_.lookup("bulkModulus");
-        const token t(is);
-        if (t.isWord() && t.wordToken() == "incompressible")
-        {
-            set.incompressible = true;
-        }
-        else if (t.isNumber() && t.number() > 0)
-        {
-            set.incompressible = false;
-            set.bulkModulus = t.number();
-        }
-        else
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Entry 'bulkModulus' in " << file << " must be a"
-                << " positive number or 'incompressible', got " << t
-                << exit(FatalIOError);
-        }
-    }
+    set.bulkModulus = readBulkModulus(dict_, file);
+    set.incompressible = !std::isfinite(set.bulkModulus);
+    if (set.incompressible) set.bulkModulus = GREAT;
     if (dict_.found("meshMotion"))
     {
         const dictionary& md = dict_.subDict("meshMotion");
