@@ -195,6 +195,9 @@ tryCase "fluid: unknown fluid model" \
 tryCase "fluid: ALE fluid coupled to a solid not available yet" \
     "interface block that couples the ALENavierStokes fluid to a solid is not implemented yet" \
     "sed -i 's/^fluidModel .*/fluidModel ALENavierStokes;/' $fp"
+tryCase "fluid: ALE fluid next to a solid without an interface" \
+    "Fluid region 'oil' in .*fluidProperties.*: the interface block that couples the ALENavierStokes fluid to a solid is not implemented yet" \
+    "sed -i 's/^fluidModel .*/fluidModel ALENavierStokes;/; /^interface /d' $fp"
 tryCase "fluid: both volume and pressure control" \
     "needs exactly one of 'injectedVolume'.*'pressure'" \
     "echo 'pressure constant 1;' >> $fp"

@@ -242,10 +242,13 @@ void Foam::fluidRegion::buildALE
 )
 {
     const fileName file = fileName("constant")/name_/"fluidProperties";
-    if (dict_.found("interface"))
+    // With a solid region in the scene the fluid must be coupled to it
+    // (an uncoupled solid and fluid side by side is never what a case
+    // means), and that needs the interface block
+    if (dict_.found("interface") || solids.size())
     {
         FatalIOErrorInFunction(dict_)
-            << "Entry 'interface' in " << file << ": the interface block"
+            << "Fluid region '" << name_ << "' in " << file << ": the interface block"
             << " that couples the ALENavierStokes fluid to a solid is not"
             << " implemented yet; the ALE fluid runs on its own (walls,"
             << " inlets, outlets), or use fluidModel hydrostatic for a"
@@ -257,8 +260,6 @@ void Foam::fluidRegion::buildALE
         {"fluidModel", "solidRegion", "interface", "bulkModulus", "rho",
          "mu", "meshMotion"}
     );
-    (void)solids;
-
     ALEFluidSettings set;
     const auto positive = [&](const word& key)
     {
