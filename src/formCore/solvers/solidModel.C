@@ -111,6 +111,9 @@ struct solidModel::impl
     sparseMatrix M;
     double alpha = 0;
     vecX accelerationOffset;
+    //- Velocity law v(U) = beta U + c of a dynamic step (empty c: none)
+    double velocityBeta = 0;
+    vecX velocityOffset;
     vecX finertia;
     //- Contact forces at the last evaluation (part of fext)
     vecX fcontact;
@@ -1291,6 +1294,32 @@ void solidModel::setAccelerationLaw(double alpha, const vecX& b)
     }
     m.alpha = alpha;
     m.accelerationOffset = b;
+}
+
+
+void solidModel::setVelocityLaw(double beta, const vecX& c)
+{
+    impl& m = *impl_;
+    if (c.size() && c.size() != m.nDofs())
+    {
+        throw numericalError
+        (
+            "solidModel::setVelocityLaw: c has " + std::to_string(c.size())
+          + " entries for " + std::to_string(m.nDofs()) + " dofs"
+        );
+    }
+    m.velocityBeta = beta;
+    m.velocityOffset = c;
+}
+
+
+bool solidModel::velocityLaw(double& beta, const vecX*& c) const
+{
+    const impl& m = *impl_;
+    if (!m.velocityOffset.size()) return false;
+    beta = m.velocityBeta;
+    c = &m.velocityOffset;
+    return true;
 }
 
 

@@ -164,6 +164,8 @@ void timeIntegrator::trapezoidalLaw(double h, solidModel& model) const
 {
     const double alpha = 4/(h*h);
     model.setAccelerationLaw(alpha, -alpha*U_ - (4/h)*V_ - A_);
+    // v = (2/h)(U - U_n) - V_n
+    model.setVelocityLaw(2/h, -(2/h)*U_ - V_);
 }
 
 
@@ -202,6 +204,8 @@ void timeIntegrator::beginStage
         c3*c3,
         c1*V_ + c2*Vm_ + c3*(c1*U_ + c2*Um_)
     );
+    // v = c1 U_n + c2 U_m + c3 U (as endStage)
+    model.setVelocityLaw(c3, c1*U_ + c2*Um_);
     // Slip rates by the same formula, c3 (xi - xi_m) - c1 (xi_m - xi_t),
     // scaled by the stage length (1 - gamma) h (contactModel.H)
     if (contact) contact->setSlipRateLaw(2 - g, -(1 - g)*(1 - g)/g);

@@ -5,10 +5,13 @@ Description
     The ALE Navier-Stokes fluid block (ALENavierStokes.H has the equations).
 \*---------------------------------------------------------------------------*/
 #include "ALENavierStokes.H"
+#include "fluidSolidInterface.H"
+#include "solidModel.H"
 #include "wedgeFvPatch.H"
 #include "pointIOField.H"
 #include "formError.H"
 #include "mathematicalConstants.H"
+#include <map>
 #include <sstream>
 
 namespace
@@ -249,7 +252,30 @@ void Foam::ALENavierStokes::classifyPatches()
         const word& name = mesh_.boundary()[patchi].name();
         const word ut = up.type();
         const word pt = pp.type();
-        if (ut == "empty") uBC_[patchi] = velocityBC::empty;
+        const bool isInterface = set_.interfacePatches.found(name);
+        if (isInterface != (ut == "movingWallVelocity"))
+        {
+            FatalErrorInFunction
+                << "Patch '" << name << "' in " << uFile.c_str() << ": "
+                << (isInterface
+                    ? "an interface patch (constant/" + mesh_.name()
+                    + "/fluidProperties, fluidInterface) moves with the solid:"
+                      " its velocity condition must be movingWallVelocity,"
+                      " not " + ut
+                    : "movingWallVelocity is the condition of the interface"
+                      " with a solid; list the patch in fluidInterface of"
+                      " constant/" + mesh_.name() + "/fluidProperties")
+                << exit(FatalError);
+        }
+        if (isInterface && fixedPressureTypes().found(pt))
+        {
+            FatalErrorInFunction
+                << "Patch '" << name << "' in " << pFile.c_str() << ": the"
+                << " pressure on the interface with the solid is the fluid's"
+                << " own; use zeroGradient, not " << pt << exit(FatalError);
+        }
+        if (isInterface) uBC_[patchi] = velocityBC::interface;
+        else if (ut == "empty") uBC_[patchi] = velocityBC::empty;
         else if (ut == "wedge") uBC_[patchi] = velocityBC::wedge;
         else if (ut == "slip" || ut == "symmetryPlane" || ut == "symmetry")
         {
@@ -287,6 +313,19 @@ void Foam::ALENavierStokes::classifyPatches()
                 << " ALE fluid; use a fixed value (" << names(fixedPressureTypes())
                 << ") or zeroGradient" << exit(FatalError);
         }
+        if
+        (
+            set_.inletPatches.found(name)
+         && uBC_[patchi] != velocityBC::fixedValue
+        )
+        {
+            FatalErrorInFunction
+                << "Patch '" << name << "' in " << uFile.c_str() << ": the"
+                << " injection inlet (constant/" << mesh_.name()
+                << "/fluidProperties, inlet) needs a fixed-value velocity"
+                << " condition (e.g. fixedValue uniform (0 0 0): the"
+                << " injection sets it), not " << ut << exit(FatalError);
+        }
         if (uBC_[patchi] == velocityBC::zeroGradient && !pFixed_[patchi])
         {
             FatalErrorInFunction
@@ -294,6 +333,17 @@ void Foam::ALENavierStokes::classifyPatches()
                 << " but p in " << pFile.c_str() << " does not fix its value; an"
                 << " outlet needs a fixed pressure (fixedValue)"
                 << exit(FatalError);
+        }
+    }
+    for (const word& n : set_.inletPatches)
+    {
+        if (mesh_.boundary().findPatchID(n) < 0)
+        {
+            FatalErrorInFunction
+                << "Entry 'inlet' in constant/" << mesh_.name()
+                << "/fluidProperties: '" << n << "' is not a patch of fluid"
+                << " region '" << mesh_.name() << "'" << nl << "    Patches: "
+                << mesh_.boundaryMesh().names() << exit(FatalError);
         }
     }
     if (set_.incompressible && !anyPressureFixed)
@@ -352,6 +402,24 @@ void Foam::ALENavierStokes::updateBoundaryValues()
         uFixed_[patchi] = U_.boundaryField()[patchi];
         pFixedValue_[patchi] = p_.boundaryField()[patchi];
     }
+    // Injection: the volume of the step through the inlets, uniformly
+    if (set_.injectedVolume && set_.inletPatches.size())
+    {
+        const scalar Q =
+            t1_ > t0_
+          ? (set_.injectedVolume(t1_) - set_.injectedVolume(t0_))/(t1_ - t0_)
+          : 0;
+        scalar A = 0;
+        for (const word& n : set_.inletPatches)
+        {
+            A += gSum(mesh_.boundary()[n].magSf());
+        }
+        for (const word& n : set_.inletPatches)
+        {
+            const label patchi = mesh_.boundary().findPatchID(n);
+            uFixed_[patchi] = -Q/(depth_*A)*mesh_.boundary()[patchi].nf();
+        }
+    }
 }
 
 
@@ -383,10 +451,12 @@ void Foam::ALENavierStokes::computeRhieChowCoefficients()
         const scalarField& dcb = fp.deltaCoeffs();
         forAll(fp, i)
         {
-            if (bc == velocityBC::fixedValue)
+            if (bc == velocityBC::fixedValue || bc == velocityBC::interface)
             {
                 a[fc[i]] += mu*magSf.boundaryField()[patchi][i]*dcb[i];
             }
+            // No flux through the interface (it moves with the fluid)
+            if (bc == velocityBC::interface) continue;
             const scalar F =
                 (cellU(x_, fc[i]) & Sf.boundaryField()[patchi][i])
               - Fm_[fp.start() + i];
@@ -578,7 +648,7 @@ void Foam::ALENavierStokes::beginIncrement
 (
     double t0,
     double t1,
-    const form::vecX&
+    const form::vecX& U
 )
 {
     t0_ = t0;
@@ -587,10 +657,14 @@ void Foam::ALENavierStokes::beginIncrement
     // Boundary values at t1 (time functions of the fields' conditions)
     const label index = runTime_.timeIndex();
     runTime_.setTime(t1, index);
-    if (set_.meshMotion != "none")
+    if (set_.meshMotion == "oscillating")
     {
         mesh_.movePoints(motionPoints(t1));
         checkMeshQuality();
+    }
+    if (interface_)
+    {
+        Un_ = U;
     }
     computeMeshFluxes();
     updateFields();
@@ -603,13 +677,29 @@ void Foam::ALENavierStokes::evaluate
 (
     double,
     const form::vecX& Us,
-    form::vecX&,
+    form::vecX& fext,
     form::vecX& r,
     std::vector<triplet>* K
 )
 {
+    if (interface_)
+    {
+        evaluateInterface(Us, fext, r, K);
+        return;
+    }
+    assemble(Us.size(), r, K, nullptr);
+}
+
+
+void Foam::ALENavierStokes::assemble
+(
+    label off,
+    form::vecX& r,
+    std::vector<triplet>* K,
+    std::vector<interfaceEntry>* KI
+)
+{
     const label nC = mesh_.nCells();
-    const label off = Us.size();
     const scalar s = depth_;
     const scalar rho = set_.rho, mu = set_.mu;
     const scalar rK = set_.incompressible ? 0 : 1/set_.bulkModulus;
@@ -708,6 +798,17 @@ void Foam::ALENavierStokes::evaluate
                     f.Ts = -dcb[i]*tensor(I);
                     f.cs = dcb[i]*uFixed_[patchi][i];
                     break;
+                case velocityBC::interface:
+                {
+                    const vector& ub = uInterface_
+                    [
+                        interfaceFace_[fp.start() + i - mesh_.nInternalFaces()]
+                    ];
+                    f.c = ub;
+                    f.Ts = -dcb[i]*tensor(I);
+                    f.cs = dcb[i]*ub;
+                    break;
+                }
                 case velocityBC::zeroGradient:
                     f.T = I;
                     break;
@@ -790,6 +891,28 @@ void Foam::ALENavierStokes::evaluate
             A += (k & Sb)/V[P]*f.T;
         }
         return A;
+    };
+
+    // d(visc)/du_b of an internal face (owner P, neighbour N, correction
+    // vector k, coefficient c) through the gradient of cell X: the
+    // interface faces b of X give visc = -c (k . S_b)/V_X u_b
+    const auto interfaceGrad = [&]
+    (
+        label P, label N, const vector& k, scalar c, label X
+    )
+    {
+        const DynamicList<label>& bf = cellBFaces[X];
+        for (label j = 0; j < bf.size(); j += 2)
+        {
+            if (uBC_[bf[j]] != velocityBC::interface) continue;
+            const fvPatch& fp = mesh_.boundary()[bf[j]];
+            const label b =
+                interfaceFace_[fp.start() + bf[j + 1] - mesh_.nInternalFaces()];
+            const vector& Sb = Sf.boundaryField()[bf[j]][bf[j + 1]];
+            const tensor A = c*(k & Sb)/V[X]*tensor(I);
+            KI->push_back({P, b, -A});
+            KI->push_back({N, b, A});
+        }
     };
 
     // dF/dp of a flux with a Rhie-Chow term coef (p_N - p_P - d . gbar):
@@ -918,6 +1041,12 @@ void Foam::ALENavierStokes::evaluate
             jMu(N, P, BP);
             jMu(P, N, -BN);
             jMu(N, N, BN);
+            if (KI)
+            {
+                // The interface velocities in the cells' gradients
+                interfaceGrad(P, N, k, cv*wf, P);
+                interfaceGrad(P, N, k, cv*(1 - wf), N);
+            }
         }
         // Mass
         jCu(P, P, mf*dFduP);
@@ -966,8 +1095,20 @@ void Foam::ALENavierStokes::evaluate
                 jMu(P, P, -mu*magS*fm.Ts);
             }
             // No flux through wedge faces (the rotated cell velocity lies
-            // in the wedge plane, which moves within itself)
+            // in the wedge plane, which moves within itself), nor through
+            // the interface (the fluid moves with the solid's wall: the
+            // flux relative to the face is zero)
             if (bc == velocityBC::wedge) continue;
+            if (bc == velocityBC::interface)
+            {
+                if (KI)
+                {
+                    const label b =
+                        interfaceFace_[fp.start() + i - mesh_.nInternalFaces()];
+                    KI->push_back({P, b, -mu*magS*dcb[i]*tensor(I)});
+                }
+                continue;
+            }
 
             // Flux relative to the face; Rhie-Chow against a fixed
             // pressure at an outlet
@@ -982,7 +1123,11 @@ void Foam::ALENavierStokes::evaluate
             Fb_[fp.start() + i - mesh_.nInternalFaces()] = F;
             const vector uconv = steady_ ? ub - u[P] : ub;
             addM(P, rho*F*uconv);
-            const scalar mb = m(pb);
+            // The injection prescribes mass: its volume is at the
+            // reference density (as the hydrostatic model's)
+            const bool injection =
+                set_.injectedVolume && set_.inletPatches.found(fp.name());
+            const scalar mb = injection ? 1.0 : m(pb);
             addC(P, mb*F);
             aM[P] += mag(rho*F*ub);
             aC[P] += mag(mb*F) + mag(ub & S);
@@ -1006,7 +1151,7 @@ void Foam::ALENavierStokes::evaluate
                 jCp(P, e.first, mb*e.second);
             }
             jCu(P, P, mb*dFdu);
-            if (!pfix) jCp(P, P, mb*rK*F);
+            if (!pfix && !injection) jCp(P, P, mb*rK*F);
         }
     }
 
@@ -1025,6 +1170,211 @@ void Foam::ALENavierStokes::evaluate
         aC[P] += mag(m(p[P])*V[P] - m(p0)*V0_[P])*rdt;
     }
     scale_ = s*Foam::sqrt(sumSqr(aM) + sumSqr(aC));
+}
+
+
+void Foam::ALENavierStokes::moveMesh(const pointField& points, bool check)
+{
+    mesh_.movePoints(points);
+    computeMeshFluxes();
+    if (check) checkMeshQuality();
+}
+
+
+void Foam::ALENavierStokes::setInterface
+(
+    const std::shared_ptr<fluidSolidInterface>& interface,
+    const form::solidModel& solid
+)
+{
+    interface_ = interface;
+    solid_ = &solid;
+    set_.meshMotion = "interface";
+    interfaceFace_.setSize(mesh_.nFaces() - mesh_.nInternalFaces(), -1);
+    forAll(interface_->faces(), j)
+    {
+        interfaceFace_[interface_->faces()[j] - mesh_.nInternalFaces()] = j;
+    }
+    uInterface_.setSize(interface_->faces().size(), Zero);
+}
+
+
+void Foam::ALENavierStokes::evaluateInterface
+(
+    const form::vecX& Us,
+    form::vecX& fext,
+    form::vecX& r,
+    std::vector<triplet>* K
+)
+{
+    const fluidSolidInterface& itf = *interface_;
+    const label off = Us.size();
+    const label nI = mesh_.nInternalFaces();
+    if (Un_.size() != Us.size()) Un_ = Us;
+
+    // The mesh follows the solid
+    const pointField base(itf.points(Us));
+    moveMesh(base);
+
+    // The solid's velocity by its time integrator, or the backward
+    // difference over the (pseudo-)time step of a static analysis
+    double beta = 0;
+    const form::vecX* c = nullptr;
+    form::vecX v;
+    if (solid_->velocityLaw(beta, c))
+    {
+        v = beta*Us + *c;
+    }
+    else
+    {
+        beta = 1/dt_;
+        v = beta*(Us - Un_);
+    }
+    uInterface_ = itf.faceVelocities(v);
+
+    std::vector<interfaceEntry> KI;
+    assemble(off, r, K, K ? &KI : nullptr);
+
+    // The fluid's forces on the solid
+    const labelList& faces = itf.faces();
+    vectorField F(faces.size());
+    forAll(F, j) F[j] = Fw_[faces[j] - nI];
+    itf.addForces(F, depth_, fext);
+    if (!K) return;
+
+    const scalar s = depth_;
+    const auto& fi = itf.faceInterpolation();
+
+    // Solid rows: f_a = s N_a(xi_f) F_f . e_c with
+    // F_f = p_P S - mu |S| dc (u_f - u_P), u_f = sum_b N_b v_b(U)
+    forAll(faces, j)
+    {
+        const label f = faces[j];
+        const label P = mesh_.faceOwner()[f];
+        const label patchi = mesh_.boundaryMesh().whichPatch(f);
+        const label i = f - mesh_.boundary()[patchi].start();
+        const vector& S = mesh_.Sf().boundaryField()[patchi][i];
+        const scalar cv =
+            set_.mu*mesh_.magSf().boundaryField()[patchi][i]
+           *mesh_.boundary()[patchi].deltaCoeffs()[i];
+        const std::vector<int>& nodes = fi[j].nodes;
+        for (label cc = 0; cc < 2; ++cc)
+        {
+            const vector& e = itf.faceDirection(j, cc);
+            for (std::size_t a = 0; a < nodes.size(); ++a)
+            {
+                const label row = 2*nodes[a] + cc;
+                const scalar w = s*fi[j].N[a];
+                K->emplace_back(row, off + ip(P), -w*(S & e));
+                for (label k = 0; k < D_; ++k)
+                {
+                    K->emplace_back(row, off + iu(P, k), -w*cv*e[cmp_[k]]);
+                }
+                for (label cb = 0; cb < 2; ++cb)
+                {
+                    const scalar eb = e & itf.faceDirection(j, cb);
+                    if (eb == 0) continue;
+                    for (std::size_t b = 0; b < nodes.size(); ++b)
+                    {
+                        K->emplace_back
+                        (
+                            row, 2*nodes[b] + cb,
+                            w*cv*eb*fi[j].N[b]*beta
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    // Fluid rows through the interface velocities: K = s dM/du_f du_f/dU
+    for (const interfaceEntry& e : KI)
+    {
+        const std::vector<int>& nodes = fi[e.face].nodes;
+        for (label cb = 0; cb < 2; ++cb)
+        {
+            const vector Ae = e.A & itf.faceDirection(e.face, cb);
+            for (std::size_t b = 0; b < nodes.size(); ++b)
+            {
+                const scalar w = s*fi[e.face].N[b]*beta;
+                for (label k = 0; k < D_; ++k)
+                {
+                    const scalar val = w*Ae[cmp_[k]];
+                    if (val != 0)
+                    {
+                        K->emplace_back
+                        (
+                            off + iu(e.cell, k), 2*nodes[b] + cb, val
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    // Through the mesh: central differences over the interface points
+    // (each moves the whole mesh by the harmonic map), chained with
+    // d(point)/dU = N_a(xi)
+    const std::vector<int> dofs = itf.dofs();
+    std::map<int, label> local;
+    forAll(dofs, k) local[dofs[k]] = k;
+    const label nF = x_.size(), nd = dofs.size();
+    form::matX Dg = form::matX::Zero(nF + nd, nd);
+    const scalarField FbSave(Fb_);
+    const vectorField FwSave(Fw_);
+    const scalar scaleSave = scale_;
+    const scalar h = 1e-6*itf.minFaceLength();
+    form::vecX rp, rm, fp(Us.size()), fm(Us.size());
+    const auto evaluateAt = [&](const pointField& pts, form::vecX& rr, form::vecX& ff)
+    {
+        moveMesh(pts, false);
+        assemble(off, rr, nullptr, nullptr);
+        forAll(F, j) F[j] = Fw_[faces[j] - nI];
+        ff.setZero();
+        itf.addForces(F, depth_, ff);
+    };
+    const auto& pi = itf.pointInterpolation();
+    for (label i = 0; i < itf.nPoints(); ++i)
+    {
+        for (label cc = 0; cc < 2; ++cc)
+        {
+            pointField pts(base);
+            itf.perturb(pts, i, cc, h);
+            evaluateAt(pts, rp, fp);
+            pts = base;
+            itf.perturb(pts, i, cc, -h);
+            evaluateAt(pts, rm, fm);
+            const form::vecX dr = (rp - rm)/(2*h);
+            form::vecX df(nd);
+            for (label k = 0; k < nd; ++k)
+            {
+                df(k) = (fp(dofs[k]) - fm(dofs[k]))/(2*h);
+            }
+            for (std::size_t a = 0; a < pi[i].nodes.size(); ++a)
+            {
+                const label col = local[2*pi[i].nodes[a] + cc];
+                Dg.col(col).head(nF) += pi[i].N[a]*dr;
+                Dg.col(col).tail(nd) += pi[i].N[a]*df;
+            }
+        }
+    }
+    for (label col = 0; col < nd; ++col)
+    {
+        for (label row = 0; row < nF + nd; ++row)
+        {
+            const scalar val = Dg(row, col);
+            if (val == 0) continue;
+            // K = -dR/dU: R = r for the fluid rows, f_ext for the solid's
+            K->emplace_back
+            (
+                row < nF ? off + row : dofs[row - nF], dofs[col], -val
+            );
+        }
+    }
+    moveMesh(base, false);
+    Fb_ = FbSave;
+    Fw_ = FwSave;
+    scale_ = scaleSave;
 }
 
 

@@ -11,6 +11,8 @@ Description
 #include "IOField.H"
 #include "OSspecific.H"
 #include "pointIOField.H"
+#include "wedgePolyPatch.H"
+#include "fluidSolidInterface.H"
 #include <limits>
 #include <sstream>
 
@@ -131,7 +133,9 @@ Foam::fluidRegion::fluidRegion
     (
         dict_,
         {"fluidModel", "solidRegion", "interface", "bulkModulus",
-         "initialVolume", "injectedVolume", "pressure"}
+         "initialVolume", "injectedVolume", "pressure",
+         // the ALENavierStokes model's, so that one case serves both
+         "fluidInterface", "rho", "mu", "inlet", "meshMotion"}
     );
 
     form::hydrostaticCavitySpec spec;
@@ -242,24 +246,48 @@ void Foam::fluidRegion::buildALE
 )
 {
     const fileName file = fileName("constant")/name_/"fluidProperties";
-    // With a solid region in the scene the fluid must be coupled to it
-    // (an uncoupled solid and fluid side by side is never what a case
-    // means), and that needs the interface block
-    if (dict_.found("interface") || solids.size())
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Fluid region '" << name_ << "' in " << file << ": the interface block"
-            << " that couples the ALENavierStokes fluid to a solid is not"
-            << " implemented yet; the ALE fluid runs on its own (walls,"
-            << " inlets, outlets), or use fluidModel hydrostatic for a"
-            << " fluid cavity" << exit(FatalIOError);
-    }
     checkKeywords
     (
         dict_,
-        {"fluidModel", "solidRegion", "interface", "bulkModulus", "rho",
-         "mu", "meshMotion"}
+        {"fluidModel", "solidRegion", "interface", "fluidInterface",
+         "bulkModulus", "rho", "mu", "meshMotion", "inlet",
+         "injectedVolume", "initialVolume", "pressure"}
     );
+    // With a solid region in the scene the fluid is coupled to it (an
+    // uncoupled solid and fluid side by side is never what a case means)
+    if (solids.size())
+    {
+        solid_ = &findSolid(dict_, solids);
+        for (const word& key : {"interface", "fluidInterface"})
+        {
+            if (!dict_.found(key) || dict_.get<wordList>(key).empty())
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "Entry '" << key << "' missing or empty in " << file
+                    << ": the ALENavierStokes fluid region '" << name_
+                    << "' needs an interface with solid region '"
+                    << solid_->name() << "': interface (its wetted patches)"
+                    << " and fluidInterface (the fluid's patches on them)"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    else if (dict_.found("interface") || dict_.found("fluidInterface"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'interface' in " << file << ": constant/"
+            << "regionProperties lists no solid region for fluid region '"
+            << name_ << "' to wet" << exit(FatalIOError);
+    }
+    if (dict_.found("pressure"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'pressure' in " << file << ": pressure control is"
+            << " the hydrostatic model's; the ALENavierStokes fluid takes"
+            << " a prescribed pressure from a fixedValue or uniformFixedValue"
+            << " condition of an inlet in 0/" << name_ << "/p"
+            << exit(FatalIOError);
+    }
     ALEFluidSettings set;
     const auto positive = [&](const word& key)
     {
@@ -273,6 +301,25 @@ void Foam::fluidRegion::buildALE
         return v;
     };
     set.rho = positive("rho");
+    if (dict_.found("fluidInterface"))
+    {
+        set.interfacePatches = dict_.get<wordList>("fluidInterface");
+    }
+    // Injection through inlet patches
+    if (dict_.found("injectedVolume") != dict_.found("inlet"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Fluid region '" << name_ << "' in " << file << ": "
+            << "injectedVolume and inlet go together (the injected volume"
+            << " enters through the inlet patches)" << exit(FatalIOError);
+    }
+    if (dict_.found("injectedVolume"))
+    {
+        set.inletPatches = dict_.get<wordList>("inlet");
+        load_.reset(Function1<scalar>::New("injectedVolume", dict_).ptr());
+        const std::shared_ptr<Function1<scalar>> f = load_;
+        set.injectedVolume = [f](double t) { return f->value(t); };
+    }
     set.mu = positive("mu");
     set.bulkModulus = readBulkModulus(dict_, file);
     set.incompressible = !std::isfinite(set.bulkModulus);
@@ -284,7 +331,14 @@ void Foam::fluidRegion::buildALE
         (
             md, {"type", "amplitude", "period", "maxNonOrthogonality"}
         );
-        set.meshMotion = md.get<word>("type");
+        set.meshMotion = md.getOrDefault<word>("type", "none");
+        if (solid_ && set.meshMotion != "none")
+        {
+            FatalIOErrorInFunction(md)
+                << "Entry 'meshMotion/type' in " << file << ": the mesh of a"
+                << " fluid coupled to a solid follows the solid; remove the"
+                << " type (or set none)" << exit(FatalIOError);
+        }
         set.maxNonOrthogonality =
             md.getOrDefault<scalar>("maxNonOrthogonality", 80);
         if (set.meshMotion == "oscillating")
@@ -328,7 +382,98 @@ void Foam::fluidRegion::buildALE
             )
         )
     );
+    // The kinds of the two meshes must agree
+    if (solid_)
+    {
+        const bool wedge = mesh_->nGeometricD() == 2 && mesh_->nSolutionD() == 2
+            && [&]()
+            {
+                for (const polyPatch& pp : mesh_->boundaryMesh())
+                {
+                    if (isA<wedgePolyPatch>(pp) && pp.size()) return true;
+                }
+                return false;
+            }();
+        const form::analysisType a = solid_->analysis();
+        const bool axi = a == form::analysisType::axisymmetric;
+        std::string why;
+        if (a == form::analysisType::solid3D)
+        {
+            why = "the interface with a 3D solid is not implemented";
+        }
+        else if (mesh_->nSolutionD() != 2)
+        {
+            why = "the fluid mesh is 3D; it must be one cell thick";
+        }
+        else if (axi != wedge)
+        {
+            why = axi
+                ? "the solid is axisymmetric but the fluid mesh has no wedge"
+                  " patches"
+                : "the fluid mesh is a wedge (axisymmetric) but the solid is"
+                  " plane strain";
+        }
+        else if (!wedge && mesh_->geometricD()[2] != -1)
+        {
+            why = "a plane fluid mesh must be thin in z (the solid's FE plane"
+                  " is x-y)";
+        }
+        else if (wedge)
+        {
+            // The solid's axis against the fluid wedge's
+            const vector solidAxis =
+                solid_->feMesh().toSpace(point(1, 1, 1), Eigen::Vector2d(0, 1));
+            for (const polyPatch& pp : mesh_->boundaryMesh())
+            {
+                if (!isA<wedgePolyPatch>(pp) || !pp.size()) continue;
+                const vector ax = refCast<const wedgePolyPatch>(pp).axis();
+                if (mag(ax & solidAxis) < 0.9999*mag(ax))
+                {
+                    why = "the fluid wedge's axis is not the solid's";
+                }
+                break;
+            }
+        }
+        if (!why.empty())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Fluid region '" << name_ << "' (" << file << ") and solid"
+                << " region '" << solid_->name() << "' (constant/"
+                << solid_->name() << "/solidProperties, analysisType): "
+                << why.c_str() << exit(FatalIOError);
+        }
+    }
     ale_ = std::make_shared<ALENavierStokes>(runTime_, mesh_(), set);
+    if (solid_)
+    {
+        wordList slip;
+        for (const fvPatchVectorField& up : ale_->U().boundaryField())
+        {
+            const word t = up.type();
+            if (t == "slip" || t == "symmetryPlane" || t == "symmetry")
+            {
+                slip.append(up.patch().name());
+            }
+        }
+        auto itf = std::make_shared<fluidSolidInterface>
+        (
+            mesh_(), ale_->referencePoints(), set.interfacePatches,
+            solid_->feMesh(), dict_.get<wordList>("interface"), slip, file
+        );
+        ale_->setInterface(itf, solid_->model());
+        if (dict_.found("initialVolume"))
+        {
+            const scalar V0 = dict_.get<scalar>("initialVolume");
+            if (mag(ale_->volume() - V0) > 0.01*V0)
+            {
+                WarningInFunction
+                    << "initialVolume " << V0 << " in " << file << " (the"
+                    << " hydrostatic model's) differs from the fluid mesh's"
+                    << " volume " << ale_->volume() << " by more than 1 %"
+                    << endl;
+            }
+        }
+    }
     model.addCoupledBlock(ale_);
 }
 

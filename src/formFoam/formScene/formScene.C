@@ -1442,6 +1442,7 @@ void Foam::formScene::run()
             (
                 0, form::vecX::Zero(model.nDofs())
             );
+            model.setVelocityLaw(0, form::vecX());
             // and backward-Euler slip rates over the (pseudo-)time step
             if (model.contact())
             {
