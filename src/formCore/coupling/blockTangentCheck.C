@@ -6,7 +6,9 @@ Description
     (blockTangentCheck.H).
 \*---------------------------------------------------------------------------*/
 #include "blockTangentCheck.H"
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace form
 {
@@ -24,41 +26,72 @@ blockTangentError checkBlockTangent
     vecX fext = vecX::Zero(N), r;
     std::vector<coupledBlock::triplet> trips;
     block.evaluate(t, U, fext, r, &trips);
-    matX K = matX::Zero(n, n);
+
+    // The block's rows and columns: its own unknowns, and the nodal dofs
+    // its triplets reach (its coupling with the solid)
+    std::vector<int> nodal;
     for (const auto& tr : trips)
     {
-        if (tr.row() >= N && tr.col() >= N)
-        {
-            K(tr.row() - N, tr.col() - N) += tr.value();
-        }
+        if (tr.row() < N) nodal.push_back(tr.row());
+        if (tr.col() < N) nodal.push_back(tr.col());
+    }
+    std::sort(nodal.begin(), nodal.end());
+    nodal.erase(std::unique(nodal.begin(), nodal.end()), nodal.end());
+    const int m = int(nodal.size());
+    std::map<int, int> local;
+    for (int k = 0; k < m; ++k) local[nodal[k]] = k;
+    const auto index = [&](int g) { return g < N ? local.at(g) : m + g - N; };
+    matX K = matX::Zero(m + n, m + n);
+    for (const auto& tr : trips)
+    {
+        K(index(tr.row()), index(tr.col())) += tr.value();
     }
     blockTangentError e;
     e.maxEntry = K.cwiseAbs().maxCoeff();
+    e.nodalDofs = m;
     double worst = 0;
-    vecX rp, rm, dx = vecX::Zero(n);
-    for (int j = 0; j < n; ++j)
+    vecX rp, rm, fp(N), fm(N), dx = vecX::Zero(n), Up(U), Um(U);
+    // G = [f_ext (the block's, on the nodal dofs); r]: K = -dG/dq
+    for (int j = 0; j < m + n; ++j)
     {
-        const double h = step*(1 + std::abs(block.unknowns()(j)));
-        dx.setZero();
-        dx(j) = h;
-        block.addToUnknowns(dx);
-        fext.setZero();
-        block.evaluate(t, U, fext, rp, nullptr);
-        dx(j) = -2*h;
-        block.addToUnknowns(dx);
-        fext.setZero();
-        block.evaluate(t, U, fext, rm, nullptr);
-        dx(j) = h;
-        block.addToUnknowns(dx);
-        for (int i = 0; i < n; ++i)
+        fp.setZero();
+        fm.setZero();
+        double h;
+        if (j < m)
         {
-            const double fd = -(rp(i) - rm(i))/(2*h);
+            const int g = nodal[j];
+            h = step*(1 + std::abs(U(g)));
+            Up(g) = U(g) + h;
+            Um(g) = U(g) - h;
+            block.evaluate(t, Up, fp, rp, nullptr);
+            block.evaluate(t, Um, fm, rm, nullptr);
+            Up(g) = U(g);
+            Um(g) = U(g);
+        }
+        else
+        {
+            h = step*(1 + std::abs(block.unknowns()(j - m)));
+            dx.setZero();
+            dx(j - m) = h;
+            block.addToUnknowns(dx);
+            block.evaluate(t, U, fp, rp, nullptr);
+            dx(j - m) = -2*h;
+            block.addToUnknowns(dx);
+            block.evaluate(t, U, fm, rm, nullptr);
+            dx(j - m) = h;
+            block.addToUnknowns(dx);
+        }
+        for (int i = 0; i < m + n; ++i)
+        {
+            const double fd = i < m
+                ? -(fp(nodal[i]) - fm(nodal[i]))/(2*h)
+                : -(rp(i - m) - rm(i - m))/(2*h);
             const double d = std::abs(fd - K(i, j));
             if (d > worst)
             {
                 worst = d;
-                e.row = i;
-                e.col = j;
+                e.row = i < m ? -1 - nodal[i] : i - m;
+                e.col = j < m ? -1 - nodal[j] : j - m;
                 e.analytic = K(i, j);
                 e.finiteDifference = fd;
             }

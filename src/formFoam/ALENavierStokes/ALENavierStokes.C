@@ -264,7 +264,7 @@ void Foam::ALENavierStokes::classifyPatches()
                       " not " + ut
                     : "movingWallVelocity is the condition of the interface"
                       " with a solid; list the patch in fluidInterface of"
-                      " constant/" + mesh_.name() + "/fluidProperties")
+                      " constant/" + mesh_.name() + "/fluidProperties").c_str()
                 << exit(FatalError);
         }
         if (isInterface && fixedPressureTypes().found(pt))
@@ -407,7 +407,7 @@ void Foam::ALENavierStokes::updateBoundaryValues()
     {
         const scalar Q =
             t1_ > t0_
-          ? (set_.injectedVolume(t1_) - set_.injectedVolume(t0_))/(t1_ - t0_)
+          ? (set_.injectedVolume(t1_) - set_.injectedVolume(t0_))/dt_
           : 0;
         scalar A = 0;
         for (const word& n : set_.inletPatches)
@@ -536,6 +536,30 @@ Foam::scalar Foam::ALENavierStokes::volume() const
 }
 
 
+Foam::scalar Foam::ALENavierStokes::meanPressure() const
+{
+    scalar sum = 0, w = 0;
+    if (interface_)
+    {
+        for (const label f : interface_->faces())
+        {
+            const scalar a = mag(mesh_.faceAreas()[f]);
+            sum += a*x_(ip(mesh_.faceOwner()[f]));
+            w += a;
+        }
+    }
+    else
+    {
+        forAll(mesh_.V(), c)
+        {
+            sum += mesh_.V()[c]*x_(ip(c));
+            w += mesh_.V()[c];
+        }
+    }
+    return w > 0 ? sum/w : 0;
+}
+
+
 Foam::label Foam::ALENavierStokes::findCell(const point& pt) const
 {
     return mesh_.findCell(pt);
@@ -653,7 +677,9 @@ void Foam::ALENavierStokes::beginIncrement
 {
     t0_ = t0;
     t1_ = t1;
-    dt_ = t1 - t0;
+    // The fluid's time step in seconds (timeScale: seconds per unit of
+    // the case's time in a quasi-static run)
+    dt_ = (t1 - t0)*set_.timeScale;
     // Boundary values at t1 (time functions of the fields' conditions)
     const label index = runTime_.timeIndex();
     runTime_.setTime(t1, index);
@@ -1223,7 +1249,8 @@ void Foam::ALENavierStokes::evaluateInterface
     form::vecX v;
     if (solid_->velocityLaw(beta, c))
     {
-        v = beta*Us + *c;
+        beta /= set_.timeScale;
+        v = beta*Us + *c/set_.timeScale;
     }
     else
     {

@@ -135,7 +135,8 @@ Foam::fluidRegion::fluidRegion
         {"fluidModel", "solidRegion", "interface", "bulkModulus",
          "initialVolume", "injectedVolume", "pressure",
          // the ALENavierStokes model's, so that one case serves both
-         "fluidInterface", "rho", "mu", "inlet", "meshMotion"}
+         "fluidInterface", "rho", "mu", "inlet", "meshMotion",
+         "timeScale"}
     );
 
     form::hydrostaticCavitySpec spec;
@@ -251,7 +252,7 @@ void Foam::fluidRegion::buildALE
         dict_,
         {"fluidModel", "solidRegion", "interface", "fluidInterface",
          "bulkModulus", "rho", "mu", "meshMotion", "inlet",
-         "injectedVolume", "initialVolume", "pressure"}
+         "injectedVolume", "initialVolume", "pressure", "timeScale"}
     );
     // With a solid region in the scene the fluid is coupled to it (an
     // uncoupled solid and fluid side by side is never what a case means)
@@ -263,7 +264,7 @@ void Foam::fluidRegion::buildALE
             if (!dict_.found(key) || dict_.get<wordList>(key).empty())
             {
                 FatalIOErrorInFunction(dict_)
-                    << "Entry '" << key << "' missing or empty in " << file
+                    << "Entry '" << key << "' missing or empty in " << file.c_str()
                     << ": the ALENavierStokes fluid region '" << name_
                     << "' needs an interface with solid region '"
                     << solid_->name() << "': interface (its wetted patches)"
@@ -275,14 +276,14 @@ void Foam::fluidRegion::buildALE
     else if (dict_.found("interface") || dict_.found("fluidInterface"))
     {
         FatalIOErrorInFunction(dict_)
-            << "Entry 'interface' in " << file << ": constant/"
+            << "Entry 'interface' in " << file.c_str() << ": constant/"
             << "regionProperties lists no solid region for fluid region '"
             << name_ << "' to wet" << exit(FatalIOError);
     }
     if (dict_.found("pressure"))
     {
         FatalIOErrorInFunction(dict_)
-            << "Entry 'pressure' in " << file << ": pressure control is"
+            << "Entry 'pressure' in " << file.c_str() << ": pressure control is"
             << " the hydrostatic model's; the ALENavierStokes fluid takes"
             << " a prescribed pressure from a fixedValue or uniformFixedValue"
             << " condition of an inlet in 0/" << name_ << "/p"
@@ -295,12 +296,16 @@ void Foam::fluidRegion::buildALE
         if (!(v > 0))
         {
             FatalIOErrorInFunction(dict_)
-                << "Entry '" << key << "' in " << file << " must be"
+                << "Entry '" << key << "' in " << file.c_str() << " must be"
                 << " positive, got " << v << exit(FatalIOError);
         }
         return v;
     };
     set.rho = positive("rho");
+    if (dict_.found("timeScale"))
+    {
+        set.timeScale = positive("timeScale");
+    }
     if (dict_.found("fluidInterface"))
     {
         set.interfacePatches = dict_.get<wordList>("fluidInterface");
@@ -309,7 +314,7 @@ void Foam::fluidRegion::buildALE
     if (dict_.found("injectedVolume") != dict_.found("inlet"))
     {
         FatalIOErrorInFunction(dict_)
-            << "Fluid region '" << name_ << "' in " << file << ": "
+            << "Fluid region '" << name_ << "' in " << file.c_str() << ": "
             << "injectedVolume and inlet go together (the injected volume"
             << " enters through the inlet patches)" << exit(FatalIOError);
     }
@@ -335,7 +340,7 @@ void Foam::fluidRegion::buildALE
         if (solid_ && set.meshMotion != "none")
         {
             FatalIOErrorInFunction(md)
-                << "Entry 'meshMotion/type' in " << file << ": the mesh of a"
+                << "Entry 'meshMotion/type' in " << file.c_str() << ": the mesh of a"
                 << " fluid coupled to a solid follows the solid; remove the"
                 << " type (or set none)" << exit(FatalIOError);
         }
@@ -348,14 +353,14 @@ void Foam::fluidRegion::buildALE
             if (!(set.period > 0))
             {
                 FatalIOErrorInFunction(md)
-                    << "Entry 'meshMotion/period' in " << file << " must be"
+                    << "Entry 'meshMotion/period' in " << file.c_str() << " must be"
                     << " positive" << exit(FatalIOError);
             }
         }
         else if (set.meshMotion != "none")
         {
             FatalIOErrorInFunction(md)
-                << "Entry 'meshMotion/type' in " << file << ": unknown '"
+                << "Entry 'meshMotion/type' in " << file.c_str() << ": unknown '"
                 << set.meshMotion << "'; valid: none oscillating"
                 << exit(FatalIOError);
         }
@@ -367,7 +372,7 @@ void Foam::fluidRegion::buildALE
     if (!isFile(meshDir/"faces") && !isFile(meshDir/"faces.gz"))
     {
         FatalErrorInFunction
-            << "Fluid region '" << name_ << "' (" << file << ", fluidModel"
+            << "Fluid region '" << name_ << "' (" << file.c_str() << ", fluidModel"
             << " ALENavierStokes) has no mesh: " << "constant"/name_
             /polyMesh::meshSubDir << " is missing; run blockMesh -region "
             << name_ << exit(FatalError);
@@ -385,7 +390,7 @@ void Foam::fluidRegion::buildALE
     // The kinds of the two meshes must agree
     if (solid_)
     {
-        const bool wedge = mesh_->nGeometricD() == 2 && mesh_->nSolutionD() == 2
+        const bool wedge = mesh_->nGeometricD() == 2
             && [&]()
             {
                 for (const polyPatch& pp : mesh_->boundaryMesh())
@@ -401,7 +406,7 @@ void Foam::fluidRegion::buildALE
         {
             why = "the interface with a 3D solid is not implemented";
         }
-        else if (mesh_->nSolutionD() != 2)
+        else if (mesh_->nGeometricD() != 2)
         {
             why = "the fluid mesh is 3D; it must be one cell thick";
         }
@@ -437,10 +442,21 @@ void Foam::fluidRegion::buildALE
         if (!why.empty())
         {
             FatalIOErrorInFunction(dict_)
-                << "Fluid region '" << name_ << "' (" << file << ") and solid"
+                << "Fluid region '" << name_ << "' (" << file.c_str() << ") and solid"
                 << " region '" << solid_->name() << "' (constant/"
                 << solid_->name() << "/solidProperties, analysisType): "
                 << why.c_str() << exit(FatalIOError);
+        }
+    }
+    for (const word& n : set.interfacePatches)
+    {
+        if (mesh_->boundaryMesh().findPatchID(n) < 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'fluidInterface' in " << file.c_str() << ": '" << n
+                << "' is not a patch of fluid region '" << name_ << "'" << nl
+                << "    Patches: " << mesh_->boundaryMesh().names()
+                << exit(FatalIOError);
         }
     }
     ale_ = std::make_shared<ALENavierStokes>(runTime_, mesh_(), set);
@@ -467,7 +483,7 @@ void Foam::fluidRegion::buildALE
             if (mag(ale_->volume() - V0) > 0.01*V0)
             {
                 WarningInFunction
-                    << "initialVolume " << V0 << " in " << file << " (the"
+                    << "initialVolume " << V0 << " in " << file.c_str() << " (the"
                     << " hydrostatic model's) differs from the fluid mesh's"
                     << " volume " << ale_->volume() << " by more than 1 %"
                     << endl;
@@ -482,7 +498,7 @@ void Foam::fluidRegion::buildALE
 
 Foam::scalar Foam::fluidRegion::pressure() const
 {
-    return cavity_ ? cavity_->pressure() : NAN;
+    return cavity_ ? cavity_->pressure() : ale_->meanPressure();
 }
 
 
@@ -528,7 +544,8 @@ bool Foam::fluidRegion::hasPatch(const word& patch) const
 
 Foam::scalar Foam::fluidRegion::injectedVolume(scalar t) const
 {
-    return cavity_ ? cavity_->injected(t) : NAN;
+    if (cavity_) return cavity_->injected(t);
+    return load_ ? load_->value(t) : 0;
 }
 
 
@@ -539,6 +556,12 @@ Foam::string Foam::fluidRegion::describe() const
     {
         os  << "fluid region " << name_ << ": ALENavierStokes on its fvMesh"
             << " (coupled velocity-pressure block)\n" << ale_->describe();
+        if (ale_->interface())
+        {
+            os  << "\ncoupled to solid region " << solid_->name() << " on";
+            for (const word& p : dict_.get<wordList>("interface")) os << ' ' << p;
+            os  << '\n' << ale_->interface()->describe();
+        }
         return os.str();
     }
     os  << "fluid region " << name_ << ": " << model_

@@ -145,7 +145,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
         if (patchi < 0)
         {
             FatalErrorInFunction
-                << "Entry 'fluidInterface' in " << file << ": '" << name
+                << "Entry 'fluidInterface' in " << file.c_str() << ": '" << name
                 << "' is not a patch of fluid region '" << region << "'"
                 << nl << "    Patches: " << bm.names() << exit(FatalError);
         }
@@ -165,7 +165,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
             {
                 FatalErrorInFunction
                     << "Fluid region '" << region << "', patch '" << name
-                    << "' (" << file << ", fluidInterface): face " << i
+                    << "' (" << file.c_str() << ", fluidInterface): face " << i
                     << " is not an edge of the 2D mesh (" << ends.size()
                     << " distinct in-plane points); the interface needs a"
                     << " one-cell-thick plane or wedge fluid mesh"
@@ -179,34 +179,66 @@ Foam::fluidSolidInterface::fluidSolidInterface
                 pointFaceLength[k] = min(pointFaceLength[k], len);
             }
             faces_.append(pp.start() + i);
-            // The face's mean of the solid's shape functions: 3-point
-            // Gauss rule along it, each point projected (exact for a face
-            // on one straight quadratic edge)
-            const Eigen::Vector2d mid = 0.5*(q2D[ends[0]] + q2D[ends[1]]);
-            const Eigen::Vector2d half = 0.5*(q2D[ends[1]] - q2D[ends[0]]);
+            // The face's mean of the solid's shape functions: the face is
+            // cut where solid nodes lie on it (the ends of the wetted
+            // edges), and a 3-point Gauss rule on each piece, each point
+            // projected (exact for straight quadratic edges)
+            const Eigen::Vector2d qa = q2D[ends[0]], qb = q2D[ends[1]];
+            const Eigen::Vector2d ab = qb - qa;
+            std::vector<double> cuts{0.0, 1.0};
+            for (const form::feFace& e : edges)
+            {
+                for (int k = 0; k < 2; ++k)
+                {
+                    const Eigen::Vector2d x =
+                        solid_.feMesh().X.row(e.nodes[k]).transpose();
+                    const double t = (x - qa).dot(ab)/ab.squaredNorm();
+                    if (t <= 1e-9 || t >= 1 - 1e-9) continue;
+                    if ((qa + t*ab - x).norm() < 1e-3*len + tol)
+                    {
+                        cuts.push_back(t);
+                    }
+                }
+            }
+            std::sort(cuts.begin(), cuts.end());
+            cuts.erase
+            (
+                std::unique
+                (
+                    cuts.begin(), cuts.end(),
+                    [](double a, double b) { return b - a < 1e-9; }
+                ),
+                cuts.end()
+            );
             const double g = std::sqrt(0.6);
             const double xg[3] = {-g, 0, g}, wg[3] = {5/18.0, 8/18.0, 5/18.0};
             std::map<int, double> weights;
             solidPoint sp;
-            for (int k = 0; k < 3; ++k)
+            for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece)
             {
-                const Eigen::Vector2d c = mid + xg[k]*half;
-                const solidPoint gp = project(c, edges);
-                if (gp.gap > 1e-3*len + tol)
+                const double t0 = cuts[piece], t1 = cuts[piece + 1];
+                for (int k = 0; k < 3; ++k)
                 {
-                    FatalErrorInFunction
-                        << "Fluid region '" << region << "', patch '" << name
-                        << "' (" << file << ", fluidInterface): the point ("
-                        << c(0) << ' ' << c(1) << ") of face " << i << " is "
-                        << gp.gap << " away from the solid's wetted patches "
-                        << solidPatches << " (entry 'interface'); the fluid"
-                        << " and solid meshes must share the interface"
-                        << exit(FatalError);
-                }
-                sp.gap = max(sp.gap, gp.gap);
-                for (std::size_t a = 0; a < gp.nodes.size(); ++a)
-                {
-                    weights[gp.nodes[a]] += wg[k]*gp.N[a];
+                    const double t = 0.5*(t0 + t1) + 0.5*(t1 - t0)*xg[k];
+                    const Eigen::Vector2d c = qa + t*ab;
+                    const solidPoint gp = project(c, edges);
+                    if (gp.gap > 1e-3*len + tol)
+                    {
+                        FatalErrorInFunction
+                            << "Fluid region '" << region << "', patch '"
+                            << name << "' (" << file.c_str()
+                            << ", fluidInterface): the point (" << c(0)
+                            << ' ' << c(1) << ") of face " << i << " is "
+                            << gp.gap << " away from the solid's wetted"
+                            << " patches " << solidPatches << " (entry"
+                            << " 'interface'); the fluid and solid meshes"
+                            << " must share the interface" << exit(FatalError);
+                    }
+                    sp.gap = max(sp.gap, gp.gap);
+                    for (std::size_t a = 0; a < gp.nodes.size(); ++a)
+                    {
+                        weights[gp.nodes[a]] += (t1 - t0)*wg[k]*gp.N[a];
+                    }
                 }
             }
             for (const auto& nw : weights)
@@ -226,7 +258,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
         if (sp.gap > 1e-3*pointFaceLength[i] + tol)
         {
             FatalErrorInFunction
-                << "Fluid region '" << region << "' (" << file
+                << "Fluid region '" << region << "' (" << file.c_str()
                 << ", fluidInterface): the interface point (" << q2D[i](0)
                 << ' ' << q2D[i](1) << ") is " << sp.gap << " away from the"
                 << " solid's wetted patches " << solidPatches << " (entry"
@@ -322,7 +354,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
         )
         {
             FatalErrorInFunction
-                << "Fluid region '" << region << "' (" << file << "): the"
+                << "Fluid region '" << region << "' (" << file.c_str() << "): the"
                 << " mesh motion has points free in the "
                 << (c ? "axial (y)" : "radial (x)") << " direction that no"
                 << " wall, inlet, outlet or interface holds; fix a patch"

@@ -578,7 +578,11 @@ void Foam::formScene::readSummary()
             keys.append(wordList{"tool", "component"});
         }
         else if (fluid_ && !fluid_->ALE() && type == "fluidPressure")
-        {}
+        {
+            // The uniform cavity pressure: a point (for the ALE model of
+            // the same case) is accepted and not needed
+            keys.append(word("point"));
+        }
         else if (fluid_ && fluid_->ALE() && type == "fluidPressure")
         {
             keys.append(word("point"));
@@ -616,7 +620,7 @@ void Foam::formScene::readSummary()
         }
         else if (fluid_ && type == "fluidVolume")
         {}
-        else if (fluid_ && !fluid_->ALE() && type == "injectedVolume")
+        else if (fluid_ && type == "injectedVolume")
         {}
         else if (type == "extent")
         {
@@ -673,7 +677,7 @@ void Foam::formScene::readSummary()
                        !fluid_ ? ""
                      : fluid_->ALE()
                      ? " fluidPressure fluidVelocity fluidFlowRate fluidForce"
-                       " fluidVolume"
+                       " fluidVolume injectedVolume"
                      : " fluidPressure fluidVolume injectedVolume"
                    )
                 << exit(FatalIOError);
@@ -877,6 +881,12 @@ Foam::scalar Foam::formScene::evaluateFluid
             F += fluid_->force(patch)[d];
         }
         return F;
+    }
+    // Without a point: the cavity pressure, or the ALE fluid's mean
+    // pressure on its interface with the solid
+    if (type == "fluidPressure" && !ed.found("point"))
+    {
+        return fluid_->pressure();
     }
     if (type == "fluidPressure" && !fluid_->ALE()) return fluid_->pressure();
     // A point of the fluid mesh
@@ -1496,12 +1506,20 @@ void Foam::formScene::run()
                             (
                                 fluid_->block(), r.time, model.U()
                             );
+                        const auto where = [&](int k)
+                        {
+                            return k >= 0
+                                ? fluid_->block().unknownName(k)
+                                : "solid dof " + std::to_string(-1 - k);
+                        };
                         Info<< "    tangent check (" << fluid_->name()
+                            << (e.nodalDofs ? " and its coupling with "
+                                + std::to_string(e.nodalDofs) + " solid dofs"
+                                : std::string()).c_str()
                             << "): max |K - K_fd|/max |K| = " << e.relative
                             << " (max |K| " << e.maxEntry << "; worst at "
-                            << fluid_->block().unknownName(e.row).c_str()
-                            << " / "
-                            << fluid_->block().unknownName(e.col).c_str()
+                            << where(e.row).c_str() << " / "
+                            << where(e.col).c_str()
                             << ": " << e.analytic << " vs "
                             << e.finiteDifference << ")" << endl;
                     }

@@ -1,0 +1,170 @@
+#!/usr/bin/env bash
+#------------------------------------------------------------------------------
+# The monolithic fluid-structure coupling (interface block) on the piston
+# problem (tests/cases/piston): oil injected at the bottom of a 1 x 1
+# column lifts an elastic plug (neo-Hookean, plane strain, rollers on the
+# sides, top fixed) that closes it; the fluid has 2 cells across, the plug
+# one element (non-matching interface).
+#
+# Analytic response: the plug is in uniaxial strain, stretch l = 1 - d
+# (d: its lift, thickness 1), Cauchy stress
+#     sigma_yy = [G (2/3) l^(-2/3) (l^2 - 1) + kappa ln l]/l = -p,
+# and the oil's mass is the initial plus the injected at the reference
+# density, rho0 (1 + V_inj) = rho0 exp(p/K) (1 + d).
+# Checks:
+#   - ALENavierStokes and hydrostatic against it (the ALE fluid's pressure
+#     is uniform to its dynamic pressure, rho u^2 ~ 1e-5 here);
+#   - the Newton matrix of the fluid and its coupling with the solid
+#     (interface velocities, forces, the mesh that follows the solid)
+#     against central differences (formFoam -checkTangent), and Newton's
+#     quadratic rate, static and dynamic (trapezoidal rule: the kinematic
+#     condition uses the integrator's velocity);
+#   - bad input: clear errors naming the file and entry.
+#------------------------------------------------------------------------------
+cd "$(dirname "$0")" || exit 1
+. ./testFunctions
+here=$(pwd)
+work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamFsi.XXXXXX")
+
+# runPiston <copy> [edits...]: copy the piston, mesh, run formFoam $ARGS
+runPiston()
+{
+    local dir=$1; shift
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$here/piston/." "$dir/"
+    (
+        cd "$dir" || exit 1
+        for e in "$@"; do eval "$e"; done
+        for r in oil plug; do
+            blockMesh -region $r > log.blockMesh.$r 2>&1 \
+                || { echo "blockMesh -region $r failed"; exit 1; }
+        done
+        timeout 300 formFoam $ARGS > log.formFoam 2>&1
+    )
+}
+
+# tangentError <log>: the largest relative error of the tangent checks
+tangentError()
+{
+    sed -n 's/.*max |K - K_fd|\/max |K| = \([^ ]*\) .*/\1/p' "$1" | sort -g | tail -1
+}
+
+# The analytic lift and pressure at the end (V_inj = 0.1)
+read -r dExact pExact < <(python3 - <<'PY'
+import math
+E, nu, K, dV = 100.0, 0.3, 50.0, 0.1
+G = E/(2*(1 + nu)); kappa = E/(3*(1 - 2*nu))
+def p(d):
+    l = 1 - d
+    return -(G*2/3*l**(-2/3)*(l*l - 1) + kappa*math.log(l))/l
+f = lambda d: (1 + d) - (1 + dV)*math.exp(-p(d)/K)
+a, b = 0.0, 0.5
+for _ in range(200):
+    m = 0.5*(a + b)
+    if f(a)*f(m) <= 0: b = m
+    else: a = m
+print("%.10g %.10g" % (a, p(a)))
+PY
+)
+echo "analytic: lift $dExact, pressure $pExact"
+
+#- ALE, static, with the tangent check
+ARGS=-checkTangent runPiston "$work/ale"
+log=$work/ale/log.formFoam
+if grep -q '^End' "$log"; then
+    pass "piston ALE: ran"
+    checkClose "piston ALE: plug lift" "$(summaryValue "$work/ale" plugLift)" "$dExact" 1e-4
+    checkClose "piston ALE: oil pressure" "$(summaryValue "$work/ale" pressure)" "$pExact" 1e-4
+    checkBelow "piston ALE: coupled Newton matrix vs finite differences" \
+        "$(tangentError "$log")" 1e-7
+    grep -q "coupling with [0-9]* solid dofs" "$log" \
+        && pass "piston ALE: the check covers the coupling with the solid" \
+        || fail "piston ALE: the tangent check did not reach the solid's dofs"
+    q=$(residualOrder "$log")
+    checkBelow "piston ALE: Newton order $q (2 - q)" "$(awk -v q="$q" 'BEGIN { print 2 - q }')" 0.3
+    # The mesh followed the plug: the oil's volume is 1 + lift
+    V=$(sed -n 's/.* V = \([^;]*\);.*/\1/p' "$log" | tail -1)
+    checkClose "piston ALE: oil volume = 1 + lift" "$V" \
+        "$(awk -v d="$dExact" 'BEGIN { print 1 + d }')" 1e-6
+else
+    fail "piston ALE: formFoam failed"; tail -20 "$log"
+fi
+
+#- The hydrostatic model from the same case (the one-word switch)
+ARGS= runPiston "$work/hyd" \
+    "sed -i 's/^fluidModel .*/fluidModel hydrostatic;/' constant/oil/fluidProperties"
+if grep -q '^End' "$work/hyd/log.formFoam"; then
+    checkClose "piston hydrostatic: plug lift" "$(summaryValue "$work/hyd" plugLift)" "$dExact" 1e-5
+    checkClose "piston hydrostatic: pressure" "$(summaryValue "$work/hyd" pressure)" "$pExact" 1e-5
+    checkClose "piston: ALE vs hydrostatic lift" "$(summaryValue "$work/ale" plugLift)" \
+        "$(summaryValue "$work/hyd" plugLift)" 1e-4
+else
+    fail "piston hydrostatic: formFoam failed"; tail -20 "$work/hyd/log.formFoam"
+fi
+
+#- Finer, non-matching the other way: 3 fluid faces on 2 solid edges (a
+#  face spans two edges), 2 x 12 cells
+ARGS= runPiston "$work/fine" \
+    "sed -i 's/^nx .*/nx 3;/; s/^ny .*/ny 12;/' system/oil/blockMeshDict" \
+    "sed -i 's/(1 \$ny 1)/(2 \$ny 1)/' system/plug/blockMeshDict"
+if grep -q '^End' "$work/fine/log.formFoam"; then
+    checkClose "piston, 3 faces on 2 edges: plug lift" \
+        "$(summaryValue "$work/fine" plugLift)" "$dExact" 2e-3
+else
+    fail "piston fine: formFoam failed"; tail -20 "$work/fine/log.formFoam"
+fi
+
+#- Dynamic: trapezoidal rule for the plug, Euler for the oil
+ARGS=-checkTangent runPiston "$work/dyn" \
+    "sed -i 's/^analysis .*/analysis dynamic;\nintegrator trapezoidal;\nmass consistent;/' system/solidSolution" \
+    "sed -i 's/E 100; nu 0.3;/E 100; nu 0.3; rho 1;/' constant/plug/solidProperties" \
+    "sed -i 's/default steadyState;/default Euler;/' system/oil/fvSchemes" \
+    "sed -i 's/^deltaT .*/deltaT 0.05;/' system/controlDict"
+log=$work/dyn/log.formFoam
+if grep -q '^End' "$log"; then
+    pass "piston dynamic: ran"
+    checkBelow "piston dynamic: coupled Newton matrix vs finite differences" \
+        "$(tangentError "$log")" 1e-7
+    q=$(residualOrder "$log")
+    checkBelow "piston dynamic: Newton order $q (2 - q)" "$(awk -v q="$q" 'BEGIN { print 2 - q }')" 0.3
+    # The plug oscillates about the static path (period about 0.5): at the
+    # end within 10 % of the static lift
+    checkClose "piston dynamic: lift near the static one" \
+        "$(summaryValue "$work/dyn" plugLift)" "$dExact" 0.1
+else
+    fail "piston dynamic: formFoam failed"; tail -20 "$log"
+fi
+
+#- Bad input
+base=$work/base
+ARGS= runPiston "$base"
+rm -rf "$base"/[1-9]* "$base/postProcessing" "$base/log.formFoam"
+tryCase "fluidInterface missing" \
+    "Entry 'fluidInterface' missing or empty in constant/oil/fluidProperties.*interface with solid region 'plug'" \
+    "sed -i '/^fluidInterface/d' constant/oil/fluidProperties"
+tryCase "interface patch not movingWallVelocity" \
+    "Patch 'top' in 0/oil/U: an interface patch .* must be movingWallVelocity, not noSlip" \
+    "sed -i 's/top          { type movingWallVelocity; value uniform (0 0 0); }/top { type noSlip; }/' 0/oil/U"
+tryCase "movingWallVelocity not on the interface" \
+    "Patch 'sides' in 0/oil/U: movingWallVelocity is the condition of the interface" \
+    "sed -i 's/sides        { type slip; }/sides { type movingWallVelocity; value uniform (0 0 0); }/' 0/oil/U"
+tryCase "unknown fluid interface patch" \
+    "Entry 'fluidInterface' in constant/oil/fluidProperties: 'lid' is not a patch of fluid region 'oil'" \
+    "sed -i 's/^fluidInterface .*/fluidInterface (lid);/' constant/oil/fluidProperties"
+tryCase "meshes do not share the interface" \
+    "is [0-9.e-]* away from the solid's wetted patches.*the fluid and solid meshes must share the interface" \
+    "sed -i 's/(0 1 0) (1 1 0) (1 2 0) (0 2 0)/(0 1.1 0) (1 1.1 0) (1 2 0) (0 2 0)/; s/(0 1 0.1) (1 1 0.1)/(0 1.1 0.1) (1 1.1 0.1)/' system/plug/blockMeshDict && blockMesh -region plug > /dev/null 2>&1"
+tryCase "plane fluid, axisymmetric solid" \
+    "Fluid region 'oil' .* and solid region 'plug' .*analysisType.*: the solid is axisymmetric but the fluid mesh has no wedge patches" \
+    "sed -i 's/planeStrain/axisymmetric/' constant/plug/solidProperties"
+tryCase "pressure control with the ALE fluid" \
+    "Entry 'pressure' in constant/oil/fluidProperties: pressure control is the hydrostatic model's" \
+    "sed -i 's/^injectedVolume .*/pressure table ((0 0) (1 1));/; /^inlet /d' constant/oil/fluidProperties"
+tryCase "injection without an inlet" \
+    "injectedVolume and inlet go together" \
+    "sed -i '/^inlet /d' constant/oil/fluidProperties"
+tryCase "fixed pressure on the interface" \
+    "Patch 'top' in 0/oil/p: the pressure on the interface with the solid is the fluid's own" \
+    "sed -i 's/top          { type zeroGradient; }/top { type fixedValue; value uniform 0; }/' 0/oil/p"
+
+rm -rf "$work"
