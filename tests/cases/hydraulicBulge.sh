@@ -28,6 +28,7 @@
 #    pressure-controlled run (pole height at p = 9 MPa within 1e-6), and its
 #    log and summary show no fluid object and no fluid time.
 # 3. Bad input of the fluid region: clear errors naming file and entry.
+# 4. The ALE fluid model from the same case against the hydrostatic one.
 . "$(dirname "$0")/testFunctions"
 here=$(cd "$(dirname "$0")" && pwd)
 
@@ -179,8 +180,9 @@ fi
 #    against the hydrostatic model on the same blank. The oil is slow
 #    (timeScale 60 s: |u| < 30 mm/s), so its pressure is uniform to 1e-5
 #    and the models differ only by the fluid mesh's polygonal boundary
-#    (chords of the bulged blank: about 1e-3 of the injected volume);
-#    stated tolerance 0.5 % on pole height and pressure.
+#    (chords of the bulged blank) and its wedge faces; stated tolerance
+#    0.2 % on pole height, pressure and pole thickness (measured: 0.08 %,
+#    0.004 %, 0.014 %).
 ale=$(caseCopy hydraulicBulge)
 hyd=$(caseCopy hydraulicBulge)
 for d in "$ale" "$hyd"; do
@@ -205,13 +207,13 @@ if grep -q '^End' "$ale/log.formFoam" && grep -q '^End' "$hyd/log.formFoam"; the
         && pass "bulge ALE: summary fluidModel ALENavierStokes" \
         || fail "bulge ALE: summary fluidModel is '$(summaryValue "$ale" fluidModel)'"
     checkClose "bulge ALE vs hydrostatic: pole height at t = 0.3" \
-        "$(value "$ale" poleHeight)" "$(value "$hyd" poleHeight)" 0.005
+        "$(value "$ale" poleHeight)" "$(value "$hyd" poleHeight)" 0.002
     checkClose "bulge ALE vs hydrostatic: pressure at t = 0.3" \
-        "$(value "$ale" pressure)" "$(value "$hyd" pressure)" 0.005
+        "$(value "$ale" pressure)" "$(value "$hyd" pressure)" 0.002
     checkClose "bulge ALE vs hydrostatic: pole thickness at t = 0.3" \
-        "$(value "$ale" poleThickness)" "$(value "$hyd" poleThickness)" 0.005
-    q=$(residualOrder "$ale/log.formFoam")
-    checkBelow "bulge ALE: Newton order $q (2 - q)" "$(awk -v q="$q" 'BEGIN { print 2 - q }')" 0.5
+        "$(value "$ale" poleThickness)" "$(value "$hyd" poleThickness)" 0.002
+    q=$(newtonOrder "$ale/log.formFoam")
+    checkBelow "bulge ALE: Newton order $q (2 - q)" "$(awk -v q="$q" 'BEGIN { print 2 - q }')" 0.3
     grep -q "interface: [0-9]* fluid faces" "$ale/log.formFoam" \
         && pass "bulge ALE: the scene prints the interface" \
         || fail "bulge ALE: no interface line in the scene"

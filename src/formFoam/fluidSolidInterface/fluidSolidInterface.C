@@ -91,6 +91,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
 {
     const polyBoundaryMesh& bm = fluid_.boundaryMesh();
     const word& region = fluid_.name();
+    const bool axi = solid_.proj() == polyMeshToFeMesh::projection::wedge;
 
     // The solid's wetted edges
     std::vector<form::feFace> edges;
@@ -213,6 +214,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
             const double g = std::sqrt(0.6);
             const double xg[3] = {-g, 0, g}, wg[3] = {5/18.0, 8/18.0, 5/18.0};
             std::map<int, double> weights;
+            double wsum = 0;
             solidPoint sp;
             for (std::size_t piece = 0; piece + 1 < cuts.size(); ++piece)
             {
@@ -235,16 +237,19 @@ Foam::fluidSolidInterface::fluidSolidInterface
                             << " must share the interface" << exit(FatalError);
                     }
                     sp.gap = max(sp.gap, gp.gap);
+                    // Axisymmetric: the area element is 2 pi r ds
+                    const double wr = (t1 - t0)*wg[k]*(axi ? c(0) : 1.0);
+                    wsum += wr;
                     for (std::size_t a = 0; a < gp.nodes.size(); ++a)
                     {
-                        weights[gp.nodes[a]] += (t1 - t0)*wg[k]*gp.N[a];
+                        weights[gp.nodes[a]] += wr*gp.N[a];
                     }
                 }
             }
             for (const auto& nw : weights)
             {
                 sp.nodes.push_back(nw.first);
-                sp.N.push_back(nw.second);
+                sp.N.push_back(nw.second/wsum);
             }
             faceInterp_.push_back(sp);
             const point& Cf = pp.faceCentres()[i];
