@@ -176,7 +176,7 @@ fi
 #------------------------------------------------------------------------------
 # 4. The ALE fluid model from the same case (the one-word switch in
 #    constant/oil/fluidProperties): a coarse oil mesh (2 + 16 cells
-#    radially, 6 deep), injection to t = 0.3 (pole height about 19 mm),
+#    radially, 6 deep), injection to t = 0.3 (pole height about 12.6 mm),
 #    against the hydrostatic model on the same blank. The oil is slow
 #    (timeScale 60 s: |u| < 30 mm/s), so its pressure is uniform to 1e-5
 #    and the models differ only by the fluid mesh's polygonal boundary
