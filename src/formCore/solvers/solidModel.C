@@ -73,6 +73,9 @@ struct solidModel::impl
     };
     std::vector<tractionLoad> tractions;
     std::vector<pressureLoad> pressures;
+    //- Body force: per dof the mass row sum int N_a rho dV0, and g(t)
+    vecX bodyWeights;
+    vectorTimeFunction bodyForce;
 
     //- A released dof whose former reaction is applied as a load that
     //  decays linearly from force at t0 to zero at t1
@@ -329,6 +332,14 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
 {
     matX X, u, K;
     vecX f;
+    if (bodyForce)
+    {
+        const Eigen::Vector2d g = bodyForce(t);
+        for (int k = 0; k < bodyWeights.size(); ++k)
+        {
+            fext(k) += bodyWeights(k)*g(k % nDim);
+        }
+    }
     for (const auto& l : tractions)
     {
         const Eigen::Vector2d tv = l.t(t);
@@ -1320,6 +1331,36 @@ bool solidModel::velocityLaw(double& beta, const vecX*& c) const
     beta = m.velocityBeta;
     c = &m.velocityOffset;
     return true;
+}
+
+
+void solidModel::setBodyForce(double rho, vectorTimeFunction g)
+{
+    impl& m = *impl_;
+    m.requireFinalised("setBodyForce");
+    if (!(rho > 0) || !std::isfinite(rho))
+    {
+        throw inputError
+        (
+            "rho", "body force: the density must be positive, got "
+          + std::to_string(rho)
+        );
+    }
+    m.bodyWeights.setZero(m.nDofs());
+    matX X, u;
+    for (int e = 0; e < int(m.elemBlock.size()); ++e)
+    {
+        const impl::blockData& b = m.blocks[m.elemBlock[e]];
+        const elementBlock& blk = m.mesh.blocks[m.elemBlock[e]];
+        m.gather(e, X, u);
+        const vecX rowSum = rho*b.kernel->massMatrix(X).rowwise().sum();
+        const int* nodes = blk.nodes(m.elemLocal[e]);
+        for (int p = 0; p < rowSum.size(); ++p)
+        {
+            m.bodyWeights(nodes[p/m.nDim]*m.nDim + p%m.nDim) += rowSum(p);
+        }
+    }
+    m.bodyForce = std::move(g);
 }
 
 

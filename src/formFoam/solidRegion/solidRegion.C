@@ -447,7 +447,10 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
         )
     )
 {
-    checkKeywords(properties_, {"analysisType", "elementType", "material"});
+    checkKeywords
+    (
+        properties_, {"analysisType", "elementType", "material", "bodyForce"}
+    );
     const word analysisName = properties_.get<word>("analysisType");
     try
     {
@@ -537,6 +540,42 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
     }
     readBoundaryConditions();
     model_->finalise();
+
+    // Body force per unit mass (gravity), a Function1 of time
+    if (properties_.found("bodyForce"))
+    {
+        if (!(density_ > 0))
+        {
+            FatalIOErrorInFunction(properties_)
+                << "Entry 'bodyForce' in constant/" << name_
+                << "/solidProperties needs the density: give 'rho' in its"
+                << " material" << exit(FatalIOError);
+        }
+        std::shared_ptr<Function1<vector>> g
+        (
+            Function1<vector>::New("bodyForce", properties_).ptr()
+        );
+        bodyForce_ = g;
+        const polyMeshToFeMesh* fe = feMesh_.get();
+        model_->setBodyForce
+        (
+            density_,
+            [g, fe](double t)
+            {
+                // In the FE plane: (x, y) of a plane mesh; (r, z) of a
+                // wedge: the axial component only (a radial body force is
+                // not axisymmetric)
+                const vector v = g->value(t);
+                if (fe->proj() == polyMeshToFeMesh::projection::planar)
+                {
+                    return Eigen::Vector2d(v.x(), v.y());
+                }
+                const vector axis =
+                    fe->toSpace(point(1, 1, 1), Eigen::Vector2d(0, 1));
+                return Eigen::Vector2d(0, v & axis);
+            }
+        );
+    }
 
     vtk_.reset(new form::vtkWriter(runTime.path()/"VTK", name_));
 }

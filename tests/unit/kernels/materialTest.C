@@ -11,7 +11,7 @@ using namespace form;
 
 TEST(material, registryHoldsAllModels)
 {
-    EXPECT_EQ(material::validTypes(), "elastoPlastic linearElastic neoHookean");
+    EXPECT_EQ(material::validTypes(), "elastoPlastic linearElastic neoHookean stVenantKirchhoff");
     const auto& reg = material::registry();
     ASSERT_EQ(reg.count("neoHookean"), 1u);
     ASSERT_EQ(reg.at("neoHookean").parameters.size(), 2u);
@@ -31,7 +31,7 @@ TEST(material, newUnknownTypeListsValidNames)
         EXPECT_EQ(e.entry(), "type");
         const std::string msg = e.what();
         EXPECT_NE(msg.find("'neoHooke'"), std::string::npos) << msg;
-        EXPECT_NE(msg.find("valid: elastoPlastic linearElastic neoHookean"), std::string::npos)
+        EXPECT_NE(msg.find("valid: elastoPlastic linearElastic neoHookean stVenantKirchhoff"), std::string::npos)
             << msg;
     }
 }
