@@ -19,6 +19,7 @@
 #     against central differences (formFoam -checkTangent), and Newton's
 #     quadratic rate, static and dynamic (trapezoidal rule: the kinematic
 #     condition uses the integrator's velocity);
+#   - a restart from the middle reproduces the continuous run;
 #   - bad input: clear errors naming the file and entry.
 #------------------------------------------------------------------------------
 cd "$(dirname "$0")" || exit 1
@@ -88,6 +89,24 @@ if grep -q '^End' "$log"; then
         "$(awk -v d="$dExact" 'BEGIN { print 1 + d }')" 1e-6
 else
     fail "piston ALE: formFoam failed"; tail -20 "$log"
+fi
+
+#- A restart from the middle (the oil's fields and moved mesh, the plug's
+#  state) reproduces the continuous run
+ARGS= runPiston "$work/rst" \
+    "sed -i 's/^writeInterval .*/writeInterval 0.5;/; s/^endTime .*/endTime 0.5;/' system/controlDict"
+(
+    cd "$work/rst" || exit 1
+    sed -i 's/^endTime .*/endTime 1;/; s/^startFrom .*/startFrom latestTime;/' system/controlDict
+    timeout 300 formFoam > log.restart 2>&1
+)
+if grep -q '^End' "$work/rst/log.restart"; then
+    checkClose "piston ALE: restart at t = 0.5 reproduces the lift" \
+        "$(summaryValue "$work/rst" plugLift)" "$(summaryValue "$work/ale" plugLift)" 1e-7
+    checkClose "piston ALE: restart at t = 0.5 reproduces the pressure" \
+        "$(summaryValue "$work/rst" pressure)" "$(summaryValue "$work/ale" pressure)" 1e-7
+else
+    fail "piston ALE: restart failed"; tail -20 "$work/rst/log.restart"
 fi
 
 #- The hydrostatic model from the same case (the one-word switch)

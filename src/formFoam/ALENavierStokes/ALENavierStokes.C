@@ -647,6 +647,10 @@ void Foam::ALENavierStokes::updateFields()
 
 void Foam::ALENavierStokes::write(const word& timeName)
 {
+    // Full precision: the fields and points are the restart state (the
+    // mass of a slightly compressible fluid is exp(p/K) V: six digits of
+    // p and of the points would change it on a restart)
+    const unsigned precision = IOstream::defaultPrecision(17);
     updateFields();
     U_.instance() = timeName;
     p_.instance() = timeName;
@@ -665,6 +669,7 @@ void Foam::ALENavierStokes::write(const word& timeName)
         );
         pts.write();
     }
+    IOstream::defaultPrecision(precision);
 }
 
 
