@@ -21,31 +21,13 @@ cd "$(dirname "$0")" || exit 1
 here=$(pwd)
 check="python3 $here/fluidCheck.py"
 
-# runFluid <case dir in tests/cases> <copy> [blockMesh edits...]: copy,
-# mesh and run; the log is <copy>/log.formFoam
-runFluid()
-{
-    local src=$1 dir=$2; shift 2
-    rm -rf "$dir"; mkdir -p "$dir"
-    cp -r "$here/$src/." "$dir/"
-    (
-        cd "$dir" || exit 1
-        for e in "$@"; do eval "$e"; done
-        blockMesh -region water > log.blockMesh 2>&1 || { echo "blockMesh failed"; exit 1; }
-        formFoam $FORMFOAM_ARGS > log.formFoam 2>&1
-    )
-}
+# runFluid <case dir in tests/cases> <copy> [edits...]: copy, mesh, run
+runFluid() { runCopy "$1" "$2" water "${@:3}"; }
 
 # orderShortfall <q> <error h> <error h/2>: q minus the observed order
 orderShortfall()
 {
     awk -v q="$1" -v a="$2" -v b="$3" 'BEGIN { print q - log(a/b)/log(2) }'
-}
-
-# tangentError <log>: the largest relative error of the tangent checks
-tangentError()
-{
-    sed -n 's/.*max |K - K_fd|\/max |K| = \([^ ]*\) .*/\1/p' "$1" | sort -g | tail -1
 }
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamFluid.XXXXXX")

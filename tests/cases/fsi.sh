@@ -12,6 +12,8 @@
 # and the oil's mass is the initial plus the injected at the reference
 # density, rho0 (1 + V_inj) = rho0 exp(p/K) (1 + d).
 # Checks:
+#   - the incompressible limit: lift = injected volume (no fixed-pressure
+#     patch needed: the plug sets the pressure);
 #   - ALENavierStokes and hydrostatic against it (the ALE fluid's pressure
 #     is uniform to its dynamic pressure, rho u^2 ~ 1e-5 here);
 #   - the Newton matrix of the fluid and its coupling with the solid
@@ -27,28 +29,9 @@ cd "$(dirname "$0")" || exit 1
 here=$(pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamFsi.XXXXXX")
 
-# runPiston <copy> [edits...]: copy the piston, mesh, run formFoam $ARGS
-runPiston()
-{
-    local dir=$1; shift
-    rm -rf "$dir"; mkdir -p "$dir"
-    cp -r "$here/piston/." "$dir/"
-    (
-        cd "$dir" || exit 1
-        for e in "$@"; do eval "$e"; done
-        for r in oil plug; do
-            blockMesh -region $r > log.blockMesh.$r 2>&1 \
-                || { echo "blockMesh -region $r failed"; exit 1; }
-        done
-        timeout 300 formFoam $ARGS > log.formFoam 2>&1
-    )
-}
-
-# tangentError <log>: the largest relative error of the tangent checks
-tangentError()
-{
-    sed -n 's/.*max |K - K_fd|\/max |K| = \([^ ]*\) .*/\1/p' "$1" | sort -g | tail -1
-}
+# runPiston <copy> [edits...]: copy the piston, mesh, run formFoam
+# $FORMFOAM_ARGS
+runPiston() { runCopy piston "$1" "oil plug" "${@:2}"; }
 
 # The analytic lift and pressure at the end (V_inj = 0.1)
 read -r dExact pExact < <(python3 - <<'PY'
@@ -70,7 +53,7 @@ PY
 echo "analytic: lift $dExact, pressure $pExact"
 
 #- ALE, static, with the tangent check
-ARGS=-checkTangent runPiston "$work/ale"
+FORMFOAM_ARGS=-checkTangent runPiston "$work/ale"
 log=$work/ale/log.formFoam
 if grep -q '^End' "$log"; then
     pass "piston ALE: ran"
@@ -93,7 +76,7 @@ fi
 
 #- A restart from the middle (the oil's fields and moved mesh, the plug's
 #  state) reproduces the continuous run
-ARGS= runPiston "$work/rst" \
+FORMFOAM_ARGS= runPiston "$work/rst" \
     "sed -i 's/^writeInterval .*/writeInterval 0.5;/; s/^endTime .*/endTime 0.5;/' system/controlDict"
 (
     cd "$work/rst" || exit 1
@@ -110,7 +93,7 @@ else
 fi
 
 #- The hydrostatic model from the same case (the one-word switch)
-ARGS= runPiston "$work/hyd" \
+FORMFOAM_ARGS= runPiston "$work/hyd" \
     "sed -i 's/^fluidModel .*/fluidModel hydrostatic;/' constant/oil/fluidProperties"
 if grep -q '^End' "$work/hyd/log.formFoam"; then
     checkClose "piston hydrostatic: plug lift" "$(summaryValue "$work/hyd" plugLift)" "$dExact" 1e-5
@@ -121,9 +104,26 @@ else
     fail "piston hydrostatic: formFoam failed"; tail -20 "$work/hyd/log.formFoam"
 fi
 
+#- Incompressible oil: the plug's compliance alone sets the pressure; the
+#  lift is the injected volume, 0.1, and p = -sigma_yy(l = 0.9)
+pInc=$(python3 -c "
+import math
+E, nu = 100.0, 0.3; G = E/(2*(1 + nu)); k = E/(3*(1 - 2*nu)); l = 0.9
+print(-(G*2/3*l**(-2/3)*(l*l - 1) + k*math.log(l))/l)")
+FORMFOAM_ARGS= runPiston "$work/inc" \
+    "sed -i 's/^bulkModulus .*/bulkModulus incompressible;/' constant/oil/fluidProperties"
+if grep -q '^End' "$work/inc/log.formFoam"; then
+    checkClose "piston, incompressible oil: lift = injected volume" \
+        "$(summaryValue "$work/inc" plugLift)" 0.1 1e-5
+    checkClose "piston, incompressible oil: pressure" \
+        "$(summaryValue "$work/inc" pressure)" "$pInc" 1e-4
+else
+    fail "piston incompressible: formFoam failed"; tail -20 "$work/inc/log.formFoam"
+fi
+
 #- Finer, non-matching the other way: 3 fluid faces on 2 solid edges (a
 #  face spans two edges), 2 x 12 cells
-ARGS= runPiston "$work/fine" \
+FORMFOAM_ARGS= runPiston "$work/fine" \
     "sed -i 's/^nx .*/nx 3;/; s/^ny .*/ny 12;/' system/oil/blockMeshDict" \
     "sed -i 's/(1 \$ny 1)/(2 \$ny 1)/' system/plug/blockMeshDict"
 if grep -q '^End' "$work/fine/log.formFoam"; then
@@ -134,7 +134,7 @@ else
 fi
 
 #- Dynamic: trapezoidal rule for the plug, Euler for the oil
-ARGS=-checkTangent runPiston "$work/dyn" \
+FORMFOAM_ARGS=-checkTangent runPiston "$work/dyn" \
     "sed -i 's/^analysis .*/analysis dynamic;\nintegrator trapezoidal;\nmass consistent;/' system/solidSolution" \
     "sed -i 's/E 100; nu 0.3;/E 100; nu 0.3; rho 1;/' constant/plug/solidProperties" \
     "sed -i 's/default steadyState;/default Euler;/' system/oil/fvSchemes" \
@@ -156,7 +156,7 @@ fi
 
 #- Bad input
 base=$work/base
-ARGS= runPiston "$base"
+FORMFOAM_ARGS= runPiston "$base"
 rm -rf "$base"/[1-9]* "$base/postProcessing" "$base/log.formFoam"
 tryCase "fluidInterface missing" \
     "Entry 'fluidInterface' missing or empty in constant/oil/fluidProperties.*interface with solid region 'plug'" \

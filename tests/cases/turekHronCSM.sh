@@ -17,19 +17,8 @@ cd "$(dirname "$0")" || exit 1
 here=$(pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamCSM.XXXXXX")
 
-# runSolid <case> <copy> [edits...]
-runSolid()
-{
-    local src=$1 dir=$2; shift 2
-    rm -rf "$dir"; mkdir -p "$dir"
-    cp -r "$here/$src/." "$dir/"
-    (
-        cd "$dir" || exit 1
-        for e in "$@"; do eval "$e"; done
-        blockMesh -region flag > log.blockMesh 2>&1 || { echo "blockMesh failed"; exit 1; }
-        timeout 300 formFoam > log.formFoam 2>&1
-    )
-}
+# runSolid <case> <copy> [edits...]: copy, mesh, run
+runSolid() { runCopy "$1" "$2" flag "${@:3}"; }
 
 #- Hanging bar
 runSolid hangingBar "$work/bar"

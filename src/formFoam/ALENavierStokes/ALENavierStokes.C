@@ -346,7 +346,9 @@ void Foam::ALENavierStokes::classifyPatches()
                 << mesh_.boundaryMesh().names() << exit(FatalError);
         }
     }
-    if (set_.incompressible && !anyPressureFixed)
+    // (A cavity closed by a solid's interface gets its pressure level
+    // from the solid's compliance)
+    if (set_.incompressible && !anyPressureFixed && set_.interfacePatches.empty())
     {
         FatalErrorInFunction
             << "Fluid region '" << mesh_.name() << "': incompressible with"
