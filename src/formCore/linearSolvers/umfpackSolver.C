@@ -1,6 +1,8 @@
 #include "umfpackSolver.H"
 #include "formError.H"
 #include <Eigen/UmfPackSupport>
+#include <cmath>
+#include <vector>
 
 namespace form
 {
@@ -26,6 +28,32 @@ struct umfpackSolver::impl
     bool metis = false;
 };
 
+namespace
+{
+
+// True if a row or column of K has more than 10 sqrt(n) entries: the
+// threshold above which AMD (and so UMFPACK's AMD/COLAMD ordering) treats
+// it as dense and orders it last (Amestoy, Davis & Duff, ACM TOMS 30,
+// 2004). METIS on the pattern of K + K^T has no such treatment: a dense
+// border widens every front to its width.
+bool hasDenseRowOrColumn(const form::sparseMatrix& K)
+{
+    const double dense = 10*std::sqrt(double(K.rows()));
+    std::vector<int> rowCount(K.rows(), 0);
+    for (int k = 0; k < K.outerSize(); ++k)
+    {
+        const int n = K.outerIndexPtr()[k + 1] - K.outerIndexPtr()[k];
+        if (n > dense) return true;
+        for (int i = K.outerIndexPtr()[k]; i < K.outerIndexPtr()[k + 1]; ++i)
+        {
+            if (++rowCount[K.innerIndexPtr()[i]] > dense) return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
 } // namespace form
 
 
@@ -33,7 +61,6 @@ form::umfpackSolver::umfpackSolver()
 :
     impl_(std::make_unique<impl>())
 {
-    impl_->lu.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
 }
 
 
@@ -48,6 +75,10 @@ void form::umfpackSolver::analyzePattern(const sparseMatrix& K)
     }
     impl_->K = K;
     impl_->K.makeCompressed();
+    impl_->lu.umfpackControl()(UMFPACK_ORDERING) =
+        hasDenseRowOrColumn(impl_->K)
+      ? UMFPACK_ORDERING_AMD
+      : UMFPACK_ORDERING_METIS;
     impl_->lu.analyzePattern(impl_->K);
     if (impl_->lu.info() != Eigen::Success)
     {

@@ -5,6 +5,7 @@
 #include "umfpackSolver.H"
 #include "formError.H"
 #include <gtest/gtest.h>
+#include <cmath>
 #include <vector>
 
 using namespace form;
@@ -183,4 +184,48 @@ TEST(linearSolver, MetisOrderingAndFactorMemory)
     EXPECT_TRUE(u.usedMetis());
     EXPECT_GT(u.factorMemory(), K.nonZeros()*sizeof(double));
     EXPECT_LT(u.factorMemory(), double(K.rows())*K.rows()*sizeof(double));
+}
+
+
+// A grid matrix bordered by m dense columns and m dense rows (as the ALE
+// fluid's mesh derivatives with respect to the interface dofs border the
+// FSI Newton matrix): UMFPACK orders it with AMD, which sets the dense
+// rows and columns aside, and the solution is the dense LU's
+TEST(linearSolver, UmfpackDenseBorderUsesAMD)
+{
+    const int n = 20, m = 6, N = n*n + m;
+    const sparseMatrix G = gridMatrix(n, 0.01, 0.3);
+    std::vector<Eigen::Triplet<double>> t;
+    for (int k = 0; k < G.outerSize(); ++k)
+    {
+        for (sparseMatrix::InnerIterator it(G, k); it; ++it)
+        {
+            t.emplace_back(it.row(), it.col(), it.value());
+        }
+    }
+    for (int b = 0; b < m; ++b)
+    {
+        const int c = n*n + b;
+        t.emplace_back(c, c, 10.0);
+        for (int i = 0; i < n*n; ++i)
+        {
+            t.emplace_back(i, c, 0.01*std::sin(0.1*i + b));
+            t.emplace_back(c, i, 0.02*std::cos(0.3*i - b));
+        }
+    }
+    sparseMatrix K(N, N);
+    K.setFromTriplets(t.begin(), t.end());
+    K.makeCompressed();
+    const vecX r = vecX::LinSpaced(N, -1, 2);
+
+    umfpackSolver u;
+    u.analyzePattern(K);
+    u.factorize(K);
+    EXPECT_FALSE(u.usedMetis());
+    const vecX x = u.solve(r);
+    EXPECT_LT((x - denseSolve(K, r)).norm(), 1e-10*x.norm());
+
+    // The grid alone (no dense row or column) keeps METIS
+    u.analyzePattern(G);
+    EXPECT_TRUE(u.usedMetis());
 }
