@@ -6,6 +6,7 @@ Description
     material-point states (see solidModel.H).
 \*---------------------------------------------------------------------------*/
 #include "solidModel.H"
+#include <cstdio>
 #include "contactModel.H"
 #include "coupledBlock.H"
 #include "sparsityPattern.H"
@@ -1059,9 +1060,28 @@ std::string solidModel::iterationNote(const vecX& residual) const
     std::string note =
         m.contact ? "  closed " + std::to_string(m.contact->nClosed()) : "";
     if (residual.size() == 0) return note;
+    // Per-block residual norms: the solid's dofs, then each block's
+    const int nFree = m.numbering.nFree();
+    const auto norm = [](const std::string& name, double v)
+    {
+        char buf[64];
+        std::snprintf(buf, sizeof(buf), "  |r_%s| %.2e", name.c_str(), v);
+        return std::string(buf);
+    };
+    note += norm("solid", residual.head(nFree).norm());
+    {
+        int offset = nFree;
+        for (const auto& b : m.coupled)
+        {
+            note += norm
+            (
+                b->effect(), residual.segment(offset, b->nUnknowns()).norm()
+            );
+            offset += b->nUnknowns();
+        }
+    }
     int i;
     residual.cwiseAbs().maxCoeff(&i);
-    const int nFree = m.numbering.nFree();
     if (i < nFree)
     {
         const int d = m.numbering.freeDofs[i];

@@ -609,6 +609,14 @@ std::string Foam::ALENavierStokes::describe() const
         << ", viscous flux " << (corrected_ ? "corrected" : "uncorrected")
         << ", Rhie-Chow pressure-velocity coupling, mesh motion "
         << set_.meshMotion;
+    if (interface_)
+    {
+        label n = 0;
+        for (const auto& c : colours_) n += label(c.size());
+        os  << "\nmesh derivative: central differences over " << n
+            << " moving points in " << colours_.size() << " colours ("
+            << 4*colours_.size() << " fluid evaluations per Newton iteration)";
+    }
     return os.str();
 }
 
@@ -1229,6 +1237,77 @@ void Foam::ALENavierStokes::setInterface
         interfaceFace_[interface_->faces()[j] - mesh_.nInternalFaces()] = j;
     }
     uInterface_.setSize(interface_->faces().size(), Zero);
+    colourMotionUnits();
+}
+
+
+void Foam::ALENavierStokes::colourMotionUnits()
+{
+    // The equations of cell P depend on the points of P, of its
+    // neighbours N (face weights, delta coefficients, centres) and of
+    // theirs (the Gauss gradients of N in the Rhie-Chow and non-orthogonal
+    // corrections use N's face weights). So moving a point changes the
+    // equations of its cells and two layers around them, and the forces
+    // on the interface faces those cells own.
+    const fluidSolidInterface& itf = *interface_;
+    const List<labelList>& units = itf.motionUnits();
+    const labelListList& pointCells = mesh_.pointCells();
+    const labelListList& cellCells = mesh_.cellCells();
+    const label nC = mesh_.nCells();
+    unitCells_.setSize(units.size());
+    colours_.clear();
+    labelList stamp(nC, -1);
+    std::vector<std::vector<char>> used;
+    forAll(units, u)
+    {
+        unitCells_[u].clear();
+        if
+        (
+            itf.unitKind(u, 0) == fluidSolidInterface::fixedUnit
+         && itf.unitKind(u, 1) == fluidSolidInterface::fixedUnit
+        )
+        {
+            continue;
+        }
+        DynamicList<label> cells;
+        for (const label p : units[u])
+        {
+            for (const label c : pointCells[p])
+            {
+                if (stamp[c] != u) { stamp[c] = u; cells.append(c); }
+            }
+        }
+        for (label layer = 0; layer < 2; ++layer)
+        {
+            const label n = cells.size();
+            for (label k = 0; k < n; ++k)
+            {
+                for (const label c : cellCells[cells[k]])
+                {
+                    if (stamp[c] != u) { stamp[c] = u; cells.append(c); }
+                }
+            }
+        }
+        unitCells_[u].transfer(cells);
+        // Greedy: the first colour none of whose units shares a cell
+        std::size_t k = 0;
+        for (;; ++k)
+        {
+            if (k == used.size())
+            {
+                used.emplace_back(nC, 0);
+                colours_.emplace_back();
+            }
+            bool free = true;
+            for (const label c : unitCells_[u])
+            {
+                if (used[k][c]) { free = false; break; }
+            }
+            if (free) break;
+        }
+        for (const label c : unitCells_[u]) used[k][c] = 1;
+        colours_[k].push_back(u);
+    }
 }
 
 
@@ -1346,57 +1425,141 @@ void Foam::ALENavierStokes::evaluateInterface
         }
     }
 
-    // Through the mesh: central differences over the interface points
-    // (each moves the whole mesh by the harmonic map), chained with
-    // d(point)/dU = N_a(xi)
+    // Through the mesh. R (the fluid's residuals and its forces on the
+    // solid) depends on the mesh points x; the points on the interface
+    // point displacements d_i by the harmonic extension, and d_i on U by
+    // (1) of fluidSolidInterface.H:
+    //     dR/dU = sum_units dR/dx_u (dx_u/dd_i) (dd_i/dU),
+    // dx_u/dd_i = 1 for the unit of interface point i, H_c(u, i) for a
+    // free unit, 0 for a fixed one. dR/dx_u by central differences,
+    // coloured: the units of one colour change disjoint sets of cells, so
+    // one pair of evaluations per colour and component gives them all.
     const std::vector<int> dofs = itf.dofs();
     std::map<int, label> local;
     forAll(dofs, k) local[dofs[k]] = k;
     const label nF = x_.size(), nd = dofs.size();
-    form::matX Dg = form::matX::Zero(nF + nd, nd);
+    // Transposed, so that a row's columns are contiguous
+    form::matX DgT = form::matX::Zero(nd, nF + nd);
     const scalarField FbSave(Fb_);
     const vectorField FwSave(Fw_);
     const scalar scaleSave = scale_;
     const scalar h = 1e-6*itf.minFaceLength();
-    form::vecX rp, rm, fp(Us.size()), fm(Us.size());
-    const auto evaluateAt = [&](const pointField& pts, form::vecX& rr, form::vecX& ff)
-    {
-        moveMesh(pts, false);
-        assemble(off, rr, nullptr, nullptr);
-        forAll(F, j) F[j] = Fw_[faces[j] - nI];
-        ff.setZero();
-        itf.addForces(F, depth_, ff);
-    };
+    const label nR = D_ + 1;
+    const List<labelList>& units = itf.motionUnits();
     const auto& pi = itf.pointInterpolation();
-    for (label i = 0; i < itf.nPoints(); ++i)
+    const cellList& cells = mesh_.cells();
+    form::vecX rp, rm, coef(nd), dF(nd);
+    vectorField Fp(faces.size()), Fm(faces.size());
+    // The mesh fluxes of the base mesh; a perturbation changes those of
+    // the faces of the points it moves
+    const scalarField FmBase(Fm_);
+    const labelListList& pointFaces = mesh_.pointFaces();
+    const faceList& meshFaces = mesh_.faces();
+    const auto evaluateAt = [&]
+    (
+        const pointField& pts,
+        const std::vector<label>& members,
+        form::vecX& rr,
+        vectorField& FF
+    )
     {
-        for (label cc = 0; cc < 2; ++cc)
+        mesh_.movePoints(pts);
+        Fm_ = FmBase;
+        for (const label u : members)
         {
-            pointField pts(base);
-            itf.perturb(pts, i, cc, h);
-            evaluateAt(pts, rp, fp);
-            pts = base;
-            itf.perturb(pts, i, cc, -h);
-            evaluateAt(pts, rm, fm);
-            const form::vecX dr = (rp - rm)/(2*h);
-            form::vecX df(nd);
-            for (label k = 0; k < nd; ++k)
+            for (const label p : units[u])
             {
-                df(k) = (fp(dofs[k]) - fm(dofs[k]))/(2*h);
+                for (const label f : pointFaces[p])
+                {
+                    Fm_[f] = meshFaces[f].sweptVol(points0_, pts)/dt_;
+                }
             }
-            for (std::size_t a = 0; a < pi[i].nodes.size(); ++a)
+        }
+        assemble(off, rr, nullptr, nullptr);
+        forAll(FF, j) FF[j] = Fw_[faces[j] - nI];
+    };
+    for (label cc = 0; cc < 2; ++cc)
+    {
+        for (const std::vector<label>& colour : colours_)
+        {
+            std::vector<label> members;
+            for (const label u : colour)
             {
-                const label col = local[2*pi[i].nodes[a] + cc];
-                Dg.col(col).head(nF) += pi[i].N[a]*dr;
-                Dg.col(col).tail(nd) += pi[i].N[a]*df;
+                if (itf.unitKind(u, cc) != fluidSolidInterface::fixedUnit)
+                {
+                    members.push_back(u);
+                }
+            }
+            if (members.empty()) continue;
+            for (const label sign : {1, -1})
+            {
+                pointField pts(base);
+                for (const label u : members)
+                {
+                    for (const label p : units[u])
+                    {
+                        pts[p] += sign*h*itf.direction(p, cc);
+                    }
+                }
+                if (sign > 0) evaluateAt(pts, members, rp, Fp);
+                else evaluateAt(pts, members, rm, Fm);
+            }
+            for (const label u : members)
+            {
+                // dx_u/dU: the columns of the solid's dofs (component cc)
+                coef.setZero();
+                const label kind = itf.unitKind(u, cc);
+                for (label i = 0; i < itf.nPoints(); ++i)
+                {
+                    const scalar w =
+                        kind == fluidSolidInterface::freeUnit
+                      ? itf.unitWeight(u, cc, i)
+                      : scalar(kind == i);
+                    if (w == 0) continue;
+                    for (std::size_t a = 0; a < pi[i].nodes.size(); ++a)
+                    {
+                        coef(local[2*pi[i].nodes[a] + cc]) += w*pi[i].N[a];
+                    }
+                }
+                // Fluid rows of the unit's cells; forces on their faces
+                dF.setZero();
+                for (const label c : unitCells_[u])
+                {
+                    for (label k = 0; k < nR; ++k)
+                    {
+                        const label row = c*nR + k;
+                        const scalar d = (rp(row) - rm(row))/(2*h);
+                        if (d != 0) DgT.col(row) += d*coef;
+                    }
+                    for (const label f : cells[c])
+                    {
+                        if (f < nI) continue;
+                        const label j = interfaceFace_[f - nI];
+                        if (j < 0) continue;
+                        const vector dFj = depth_*(Fp[j] - Fm[j])/(2*h);
+                        for (label cb = 0; cb < 2; ++cb)
+                        {
+                            const scalar v = dFj & itf.faceDirection(j, cb);
+                            const auto& fj = fi[j];
+                            for (std::size_t a = 0; a < fj.nodes.size(); ++a)
+                            {
+                                dF(local[2*fj.nodes[a] + cb]) += fj.N[a]*v;
+                            }
+                        }
+                    }
+                }
+                for (label k = 0; k < nd; ++k)
+                {
+                    if (dF(k) != 0) DgT.col(nF + k) += dF(k)*coef;
+                }
             }
         }
     }
-    for (label col = 0; col < nd; ++col)
+    for (label row = 0; row < nF + nd; ++row)
     {
-        for (label row = 0; row < nF + nd; ++row)
+        for (label col = 0; col < nd; ++col)
         {
-            const scalar val = Dg(row, col);
+            const scalar val = DgT(col, row);
             if (val == 0) continue;
             // K = -dR/dU: R = r for the fluid rows, f_ext for the solid's
             K->emplace_back
@@ -1405,7 +1568,8 @@ void Foam::ALENavierStokes::evaluateInterface
             );
         }
     }
-    moveMesh(base, false);
+    mesh_.movePoints(base);
+    Fm_ = FmBase;
     Fb_ = FbSave;
     Fw_ = FwSave;
     scale_ = scaleSave;

@@ -11,6 +11,7 @@ Description
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <map>
+#include <tuple>
 #include <set>
 #include <sstream>
 
@@ -318,9 +319,10 @@ Foam::fluidSolidInterface::fluidSolidInterface
     // Harmonic extension per component
     const edgeList& meshEdges = fluid_.edges();
     const label nI = q2D.size();
+    labelList freeIndex[2] = {labelList(nP, -1), labelList(nP, -1)};
     for (label c = 0; c < 2; ++c)
     {
-        labelList index(nP, -1);
+        labelList& index = freeIndex[c];
         label nF = 0;
         forAll(kind[c], p)
         {
@@ -367,6 +369,41 @@ Foam::fluidSolidInterface::fluidSolidInterface
         }
         H_[c] = ldlt.solve(B);
     }
+
+    // Motion units: the points joined by mesh edges without in-plane
+    // length (the copies of one in-plane point), split where their kinds
+    // differ
+    labelList root(identity(nP));
+    const auto find = [&](label p)
+    {
+        while (root[p] != p) p = root[p] = root[root[p]];
+        return p;
+    };
+    for (const edge& e : meshEdges)
+    {
+        if ((q[e[0]] - q[e[1]]).norm() < tol)
+        {
+            root[find(e[0])] = find(e[1]);
+        }
+    }
+    std::map<std::tuple<label, label, label>, label> unitOf;
+    for (label p = 0; p < nP; ++p)
+    {
+        const auto key = std::make_tuple(find(p), kind[0][p], kind[1][p]);
+        auto it = unitOf.find(key);
+        if (it == unitOf.end())
+        {
+            it = unitOf.emplace(key, units_.size()).first;
+            units_.append(labelList());
+            for (label c = 0; c < 2; ++c)
+            {
+                const label k = kind[c][p];
+                unitKind_[c].append(k == -1 ? freeUnit : k == -2 ? fixedUnit : k);
+                unitRow_[c].append(freeIndex[c][p]);
+            }
+        }
+        units_[it->second].append(p);
+    }
 }
 
 
@@ -404,24 +441,6 @@ Foam::fluidSolidInterface::points(const form::vecX& U) const
         }
     }
     return tpts;
-}
-
-
-void Foam::fluidSolidInterface::perturb
-(
-    pointField& pts,
-    label i,
-    label c,
-    scalar h
-) const
-{
-    const vectorField& e = c ? ez_ : er_;
-    for (const label p : pointIds_[i]) pts[p] += h*e[p];
-    forAll(free_[c], k)
-    {
-        const scalar w = H_[c](k, i);
-        if (w != 0) pts[free_[c][k]] += h*w*e[free_[c][k]];
-    }
 }
 
 

@@ -1501,10 +1501,15 @@ void Foam::formScene::run()
                     if (fluid_) Info<< fluid_->report(r.time).c_str() << endl;
                     if (fluid_ && checkTangent_)
                     {
+                        // Dense: a large block (a fine ALE mesh) has
+                        // only its coupling with the solid checked
+                        const bool couplingOnly =
+                            fluid_->block().nUnknowns() > maxDenseCheck;
                         const form::blockTangentError e =
                             form::checkBlockTangent
                             (
-                                fluid_->block(), r.time, model.U()
+                                fluid_->block(), r.time, model.U(), 1e-6,
+                                couplingOnly
                             );
                         const auto where = [&](int k)
                         {
@@ -1512,10 +1517,21 @@ void Foam::formScene::run()
                                 ? fluid_->block().unknownName(k)
                                 : "solid dof " + std::to_string(-1 - k);
                         };
+                        std::string what;
+                        if (e.couplingOnly)
+                        {
+                            what = ": only the columns of its coupling with "
+                              + std::to_string(e.nodalDofs) + " solid dofs, its "
+                              + std::to_string(fluid_->block().nUnknowns())
+                              + " unknowns being too many for a dense check";
+                        }
+                        else if (e.nodalDofs)
+                        {
+                            what = " and its coupling with "
+                              + std::to_string(e.nodalDofs) + " solid dofs";
+                        }
                         Info<< "    tangent check (" << fluid_->name()
-                            << (e.nodalDofs ? " and its coupling with "
-                                + std::to_string(e.nodalDofs) + " solid dofs"
-                                : std::string()).c_str()
+                            << what.c_str()
                             << "): max |K - K_fd|/max |K| = " << e.relative
                             << " (max |K| " << e.maxEntry << "; worst at "
                             << where(e.row).c_str() << " / "
