@@ -171,6 +171,9 @@ if [ -f "$d/postProcessing/summary" ] && [ -f "$p/postProcessing/summary" ]; the
     ft=$(awk '$1 == "fluid" && NF == 2 { print $2 }' "$d/log.formFoam")
     [ "$ft" = 0 ] && pass "bulge dry: fluid time 0" \
         || fail "bulge dry: fluid time '$ft', not 0"
+    mt=$(awk '$1 == "mesh" && $2 == "motion" { print $3 }' "$d/log.formFoam")
+    [ "$mt" = 0 ] && pass "bulge dry: mesh motion time 0" \
+        || fail "bulge dry: mesh motion time '$mt', not 0"
 fi
 
 #------------------------------------------------------------------------------
@@ -214,6 +217,12 @@ if grep -q '^End' "$ale/log.formFoam" && grep -q '^End' "$hyd/log.formFoam"; the
         "$(value "$ale" poleThickness)" "$(value "$hyd" poleThickness)" 0.002
     q=$(newtonOrder "$ale/log.formFoam")
     checkBelow "bulge ALE: Newton order $q (2 - q)" "$(awk -v q="$q" 'BEGIN { print 2 - q }')" 0.3
+    # The time per effect: the mesh motion, part of the fluid's time
+    read -r ft mt < <(awk '$1 == "fluid" && NF == 2 { f = $2 }
+        $1 == "mesh" && $2 == "motion" { m = $3 } END { print f, m }' "$ale/log.formFoam")
+    awk -v f="$ft" -v m="$mt" 'BEGIN { exit !(m > 0 && m < f) }' \
+        && pass "bulge ALE: time per effect: mesh motion $mt s of the fluid's $ft s" \
+        || fail "bulge ALE: mesh motion time '$mt' not within the fluid's '$ft'"
     grep -q "interface: [0-9]* fluid faces" "$ale/log.formFoam" \
         && pass "bulge ALE: the scene prints the interface" \
         || fail "bulge ALE: no interface line in the scene"

@@ -5,6 +5,7 @@ Description
     The ALE Navier-Stokes fluid block (ALENavierStokes.H has the equations).
 \*---------------------------------------------------------------------------*/
 #include "ALENavierStokes.H"
+#include "wallClock.H"
 #include "fluidSolidInterface.H"
 #include "solidModel.H"
 #include "wedgeFvPatch.H"
@@ -700,7 +701,9 @@ void Foam::ALENavierStokes::beginIncrement
     runTime_.setTime(t1, index);
     if (set_.meshMotion == "oscillating")
     {
+        const auto start = std::chrono::steady_clock::now();
         mesh_.movePoints(motionPoints(t1));
+        meshMotionTime_ += form::secondsSince(start);
         checkMeshQuality();
     }
     if (interface_)
@@ -1216,8 +1219,10 @@ void Foam::ALENavierStokes::assemble
 
 void Foam::ALENavierStokes::moveMesh(const pointField& points, bool check)
 {
+    const auto start = std::chrono::steady_clock::now();
     mesh_.movePoints(points);
     computeMeshFluxes();
+    meshMotionTime_ += form::secondsSince(start);
     if (check) checkMeshQuality();
 }
 
@@ -1463,6 +1468,7 @@ void Foam::ALENavierStokes::evaluateInterface
         vectorField& FF
     )
     {
+        const auto start = std::chrono::steady_clock::now();
         mesh_.movePoints(pts);
         Fm_ = FmBase;
         for (const label u : members)
@@ -1475,6 +1481,7 @@ void Foam::ALENavierStokes::evaluateInterface
                 }
             }
         }
+        meshMotionTime_ += form::secondsSince(start);
         assemble(off, rr, nullptr, nullptr);
         forAll(FF, j) FF[j] = Fw_[faces[j] - nI];
     };
@@ -1568,7 +1575,9 @@ void Foam::ALENavierStokes::evaluateInterface
             );
         }
     }
+    const auto start = std::chrono::steady_clock::now();
     mesh_.movePoints(base);
+    meshMotionTime_ += form::secondsSince(start);
     Fm_ = FmBase;
     Fb_ = FbSave;
     Fw_ = FwSave;

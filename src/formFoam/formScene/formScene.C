@@ -1611,6 +1611,9 @@ void Foam::formScene::run()
         << "    assembly        " << t.assembly << nl
         << "    contact         " << t.contact << nl
         << "    fluid           " << t.fluid << nl
+        << "      mesh motion   "
+        << (fluid_ ? fluid_->meshMotionTime() : scalar(0))
+        << " (part of fluid)" << nl
         << "    factorisation   " << t.factorisation << nl
         << "    solve           " << t.solve << nl
         << "    output          " << t.output << nl
