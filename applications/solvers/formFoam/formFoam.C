@@ -28,7 +28,9 @@ int main(int argc, char *argv[])
     (
         "checkTangent",
         "after each converged step, compare the fluid block's Newton matrix"
-        " with finite differences of its residuals (small cases)"
+        " with finite differences of its residuals (dense: all columns up"
+        " to 3000 fluid unknowns, above only those of its coupling with the"
+        " solid)"
     );
     #include "setRootCase.H"
     #include "createTime.H"
