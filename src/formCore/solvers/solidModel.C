@@ -98,6 +98,8 @@ struct solidModel::impl
 
     //- Internal and external nodal forces at the last evaluate (all dofs)
     vecX fint;
+    //- forceLevel()
+    double forceLevel = 0;
     vecX fext;
 
     //- Contact (optional), all coupled blocks (contact first, if any) and
@@ -1483,6 +1485,10 @@ double solidModel::externalForceNorm() const
     }
     return std::sqrt(s);
 }
+
+
+double solidModel::forceLevel() const { return impl_->forceLevel; }
+void solidModel::setForceLevel(double F) { impl_->forceLevel = F; }
 
 
 double solidModel::reactionNorm() const

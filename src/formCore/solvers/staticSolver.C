@@ -402,32 +402,59 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     );
     log_<< line;
 
-    // The predicted state may already be in equilibrium (a linear
-    // response, or a steady stretch of a forming process)
-    if (predicted && nFree > 0)
+    // A step may start in equilibrium: a linear response reached by the
+    // predictor, a steady stretch of a forming process, or a step with
+    // nothing to do (loads held, a dwell). Criterion: ||r0|| <= forceTol
+    // * L with L = max(||f_ext||, ||R||, F_c), F_c the force reference
+    // under which the committed state was accepted; L does not vanish
+    // when the increment does. No update is computed then (its energy
+    // would be round-off, and no energy ratio could be formed from it).
+    const auto level = [&]()
     {
-        const double level =
-            std::max(model_.externalForceNorm(), model_.reactionNorm());
-        if (level > 0 && r0 <= newton_.forceTolerance*level)
+        return std::max
+        (
+            {
+                model_.externalForceNorm(), model_.reactionNorm(),
+                model_.forceLevel()
+            }
+        );
+    };
+    if (nFree > 0 && r0 <= newton_.forceTolerance*level())
+    {
+        // r0 is linearised in the prescribed increment: evaluate at the
+        // state with it applied, which also gives the reactions of this
+        // state (they were those before the increment)
+        if (!evaluate(t1, r, true))
         {
-            // r0 is linearised in the prescribed increment: evaluate at
-            // the state with it applied, which also gives the reactions
-            // of this state (they were those before the increment)
-            if (!evaluate(t1, r, true))
-            {
-                throw stepFailure("material update failed");
-            }
-            const double level1 =
-                std::max(model_.externalForceNorm(), model_.reactionNorm());
-            if (r.norm() <= newton_.forceTolerance*level1)
-            {
-                log_<< "    equilibrium at the predicted state\n";
-                report.iterations = 0;
-                return true;
-            }
-            rhs = r;
+            throw stepFailure("material update failed");
         }
+        const double r1 = r.norm();
+        const double level1 = level();
+        if (r1 <= newton_.forceTolerance*level1)
+        {
+            char note[160];
+            std::snprintf
+            (
+                note, sizeof(note),
+                "    equilibrium at the %s state: |r| %.3e <= forceTolerance"
+                " * %.3e\n",
+                predicted ? "predicted" : "start", r1, level1
+            );
+            log_<< note;
+            model_.setForceLevel(level1);
+            report.iterations = 0;
+            return true;
+        }
+        rhs = r;
     }
+    // A step that starts close to equilibrium (||r0|| <= sqrt(forceTol)
+    // times the load and reaction level, e.g. a small change of load): its
+    // first update is small, so the energy ratio has no reference, as
+    // after a prediction, and the force criterion alone decides
+    const double loadLevel =
+        std::max(model_.externalForceNorm(), model_.reactionNorm());
+    const bool nearEquilibrium =
+        predicted || r0 <= std::sqrt(newton_.forceTolerance)*loadLevel;
 
     if (nFree == 0)
     {
@@ -513,7 +540,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             rNorm <= newton_.absoluteForceTolerance
          || (
                 rNorm <= newton_.forceTolerance*ref
-             && (predicted || energyRatio <= newton_.energyTolerance)
+             && (nearEquilibrium || energyRatio <= newton_.energyTolerance)
             );
         // Round-off floor: the energy criterion holds, the residual no
         // longer decreases and is small. Nearly incompressible materials
@@ -534,6 +561,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         }
         if (converged || roundOff)
         {
+            model_.setForceLevel(ref);
             return true;
         }
         rPrevNorm = rNorm;

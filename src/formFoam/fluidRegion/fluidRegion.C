@@ -247,6 +247,7 @@ void Foam::fluidRegion::buildALE
 )
 {
     const fileName file = fileName("constant")/name_/"fluidProperties";
+    checkNumbers(dict_);
     checkKeywords
     (
         dict_,
@@ -331,7 +332,8 @@ void Foam::fluidRegion::buildALE
     if (set.incompressible) set.bulkModulus = GREAT;
     if (dict_.found("meshMotion"))
     {
-        const dictionary& md = dict_.subDict("meshMotion");
+        const dictionary& md =
+            subDictOf(dict_, "meshMotion", "{ type ...; }");
         checkKeywords
         (
             md, {"type", "amplitude", "period", "maxNonOrthogonality"}

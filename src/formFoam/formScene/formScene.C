@@ -21,6 +21,8 @@
 void Foam::formScene::readSolution()
 {
     const dictionary& d = solution_;
+    checkNumbers(runTime_.controlDict());
+    checkNumbers(d);
     checkKeywords
     (
         d,
@@ -319,19 +321,15 @@ void Foam::formScene::readSchedule()
             IOobject::MUST_READ, IOobject::NO_WRITE, false
         )
     );
+    checkNumbers(sd);
     checkKeywords(sd, {"steps"});
-    const dictionary& steps = sd.subDict("steps");
+    const dictionary& steps =
+        subDictOf(sd, "steps", "{ <step> { endTime ...; } }");
     // The first step starts with the case (before any restart time)
     scalar t0 = -GREAT;
     for (const entry& e : steps)
     {
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(steps)
-                << "Process step '" << e.keyword() << "' in " << steps.name()
-                << " must be a dictionary" << exit(FatalIOError);
-        }
-        const dictionary& d = e.dict();
+        const dictionary& d = dictOf(e, steps, "{ endTime ...; deltaT ...; }");
         checkKeywords
         (
             d,
@@ -482,17 +480,12 @@ void Foam::formScene::applyActions(const processStep& step)
     }
     if (d.found("pin"))
     {
-        const dictionary& pd = d.subDict("pin");
+        const dictionary& pd =
+            subDictOf(d, "pin", "{ <name> { point (x y z); components (x y); } }");
         for (const entry& pe : pd)
         {
-            if (!pe.isDict())
-            {
-                FatalIOErrorInFunction(pd)
-                    << "Entry '" << pe.keyword() << "' in " << pd.name()
-                    << " must be a dictionary { point (x y z); components"
-                    << " (x y); }" << exit(FatalIOError);
-            }
-            const dictionary& p = pe.dict();
+            const dictionary& p =
+                dictOf(pe, pd, "{ point (x y z); components (x y); }");
             checkKeywords(p, {"point", "components"});
             labelList comps;
             for (const word& c : p.get<wordList>("components"))
@@ -506,26 +499,22 @@ void Foam::formScene::applyActions(const processStep& step)
     }
     if (d.found("prescribe"))
     {
-        const dictionary& pd = d.subDict("prescribe");
+        const dictionary& pd =
+            subDictOf(d, "prescribe", "{ <patch> { type ...; } }");
         for (const entry& pe : pd)
         {
-            if (!pe.isDict())
-            {
-                FatalIOErrorInFunction(pd)
-                    << "Entry '" << pe.keyword() << "' in " << pd.name()
-                    << " must be a boundary-condition dictionary"
-                    << exit(FatalIOError);
-            }
-            const word type = pe.dict().get<word>("type");
+            const dictionary& bc =
+                dictOf(pe, pd, "{ type fixedDisplacement; ... }");
+            const word type = bc.get<word>("type");
             if (!solidRegion::conditionTypes().found(type))
             {
-                FatalIOErrorInFunction(pe.dict())
+                FatalIOErrorInFunction(bc)
                     << "Unknown boundary condition type '" << type << "' in "
-                    << pe.dict().name() << nl << "    Valid types: "
+                    << bc.name() << nl << "    Valid types: "
                     << solidRegion::conditionTypes() << exit(FatalIOError);
             }
             Info<< "    prescribe " << pe.keyword() << " " << type << nl;
-            s.applyCondition(pe.keyword(), pe.dict());
+            s.applyCondition(pe.keyword(), bc);
         }
     }
 }
@@ -534,18 +523,13 @@ void Foam::formScene::applyActions(const processStep& step)
 void Foam::formScene::readSummary()
 {
     if (!solution_.found("summary")) return;
-    const dictionary& sd = solution_.subDict("summary");
+    const dictionary& sd =
+        subDictOf(solution_, "summary", "{ <name> { type ...; } }");
     for (const entry& e : sd)
     {
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(sd)
-                << "summary entry '" << e.keyword()
-                << "' must be a dictionary" << exit(FatalIOError);
-        }
         summaryEntry se;
         se.name = e.keyword();
-        se.dict = e.dict();
+        se.dict = dictOf(e, sd, "{ type ...; }");
         const dictionary& ed = se.dict;
         const word type = ed.get<word>("type");
         const wordList common{"type", "scale", "statistic", "time", "at"};

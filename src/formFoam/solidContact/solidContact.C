@@ -135,6 +135,7 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
         )
     )
 {
+    checkNumbers(dict_);
     checkKeywords
     (
         dict_,
@@ -151,32 +152,25 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
 
     // Rigid tools (optional when every pair has a deformable target)
     std::vector<form::rigidToolSpec> tools;
-    const dictionary& tdict = dict_.subOrEmptyDict("tools");
+    const dictionary& tdict =
+        dict_.found("tools")
+      ? subDictOf(dict_, "tools", "{ <tool> { type ...; } }")
+      : dictionary::null;
     for (const entry& e : tdict)
     {
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(tdict)
-                << "Tool '" << e.keyword() << "' in " << tdict.name()
-                << " must be a dictionary" << exit(FatalIOError);
-        }
+        const dictionary& td = dictOf(e, tdict, "{ type ...; }");
         toolNames_.append(e.keyword());
-        tools.push_back(readTool(e.keyword(), e.dict()));
+        tools.push_back(readTool(e.keyword(), td));
     }
 
     std::vector<form::contactPairSpec> pairs;
-    const dictionary& pdict = dict_.subDict("pairs");
+    const dictionary& pdict =
+        subDictOf(dict_, "pairs", "{ <pair> { patch ...; tool ...; } }");
     const auto& faceSets = solid_.feMesh().feMesh().faceSets;
     for (const entry& e : pdict)
     {
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(pdict)
-                << "Pair '" << e.keyword() << "' in " << pdict.name()
-                << " must be a dictionary { patch ...; tool ...; friction"
-                << " ...; }" << exit(FatalIOError);
-        }
-        const dictionary& pd = e.dict();
+        const dictionary& pd =
+            dictOf(e, pdict, "{ patch ...; tool ...; friction ...; }");
         checkKeywords(pd, {"patch", "tool", "targetPatch", "friction"});
         form::contactPairSpec ps;
         ps.name = e.keyword();

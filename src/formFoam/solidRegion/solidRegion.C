@@ -368,7 +368,9 @@ void Foam::solidRegion::readBoundaryConditions()
     }
     IFstream is(path);
     const dictionary fieldDict(is);
-    const dictionary& bf = fieldDict.subDict("boundaryField");
+    checkNumbers(fieldDict);
+    const dictionary& bf =
+        subDictOf(fieldDict, "boundaryField", "{ <patch> { type ...; } }");
 
     wordList validTypes(conditionTypes());
     validTypes.append("empty");
@@ -387,7 +389,8 @@ void Foam::solidRegion::readBoundaryConditions()
                 << nl << "    Valid types: " << validTypes
                 << exit(FatalIOError);
         }
-        const dictionary& pd = bf.subDict(pp.name());
+        const dictionary& pd =
+            subDictOf(bf, pp.name(), "{ type fixedDisplacement; ... }");
         const word type = pd.get<word>("type");
         if (!validTypes.found(type))
         {
@@ -447,6 +450,7 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
         )
     )
 {
+    checkNumbers(properties_);
     checkKeywords
     (
         properties_, {"analysisType", "elementType", "material", "bodyForce"}
@@ -482,7 +486,7 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
         fatalInput(properties_, err);
     }
 
-    readMaterial(properties_.subDict("material"));
+    readMaterial(subDictOf(properties_, "material", "{ type ...; E ...; }"));
 
     mesh_.reset
     (
