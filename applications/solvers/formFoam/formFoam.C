@@ -46,8 +46,16 @@ namespace
     }
     catch (const Foam::IOerror& err)
     {
-        Perr<< nl << err << nl << "\nformFoam: stopped on input error\n"
-            << endl;
+        Perr<< nl << err << nl;
+        // OpenFOAM's reader stops on a number it cannot hold (1e400)
+        // with a message that does not say so
+        if (err.message().find("ill defined primitiveEntry") != std::string::npos)
+        {
+            Perr<< "    (a value that cannot be read: a number beyond the"
+                << " range of a double, e.g. 1e400, or an unbalanced"
+                << " bracket)" << nl;
+        }
+        Perr<< "\nformFoam: stopped on input error\n" << endl;
     }
     catch (const Foam::error& err)
     {
@@ -83,6 +91,9 @@ int main(int argc, char *argv[])
 {
     FatalError.throwExceptions();
     FatalIOError.throwExceptions();
+    // On the heap: an error must not unwind it, since argList's destructor
+    // ends the job with exit code 0
+    argList* argsPtr = nullptr;
     try
     {
         argList::addNote("Implicit FE forming solver (formFoam)");
@@ -95,7 +106,12 @@ int main(int argc, char *argv[])
             " columns up to 3000 fluid unknowns, above only those of its"
             " coupling with the solid)"
         );
-        #include "setRootCase.H"
+        argsPtr = new argList(argc, argv);
+        argList& args = *argsPtr;
+        if (!args.checkRootCase())
+        {
+            FatalError.exit();
+        }
 
         // Numbers are checked by formFoam (see Description), not trapped
         sigFpe::unset(false);
@@ -113,5 +129,6 @@ int main(int argc, char *argv[])
     {
         stop();
     }
+    delete argsPtr;     // ends the job (exit code 0)
     return 0;
 }

@@ -107,6 +107,7 @@ Foam::fluidRegion::fluidRegion
     model_(dict_.get<word>("fluidModel")),
     solid_(nullptr)
 {
+    checkInput(dict_, dict_.objectPath());
     // The file as the user sees it, for messages
     const fileName file = fileName("constant")/name/"fluidProperties";
     if (!fluidModels().found(model_))
@@ -247,7 +248,6 @@ void Foam::fluidRegion::buildALE
 )
 {
     const fileName file = fileName("constant")/name_/"fluidProperties";
-    checkNumbers(dict_);
     checkKeywords
     (
         dict_,

@@ -21,8 +21,11 @@
 void Foam::formScene::readSolution()
 {
     const dictionary& d = solution_;
-    checkNumbers(runTime_.controlDict());
-    checkNumbers(d);
+    checkInput
+    (
+        runTime_.controlDict(), runTime_.path()/"system"/"controlDict"
+    );
+    checkInput(solution_, solution_.objectPath());
     checkKeywords
     (
         d,
@@ -321,7 +324,7 @@ void Foam::formScene::readSchedule()
             IOobject::MUST_READ, IOobject::NO_WRITE, false
         )
     );
-    checkNumbers(sd);
+    checkInput(sd, sd.objectPath());
     checkKeywords(sd, {"steps"});
     const dictionary& steps =
         subDictOf(sd, "steps", "{ <step> { endTime ...; } }");

@@ -135,7 +135,7 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
         )
     )
 {
-    checkNumbers(dict_);
+    checkInput(dict_, dict_.objectPath());
     checkKeywords
     (
         dict_,

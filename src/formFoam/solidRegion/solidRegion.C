@@ -368,7 +368,7 @@ void Foam::solidRegion::readBoundaryConditions()
     }
     IFstream is(path);
     const dictionary fieldDict(is);
-    checkNumbers(fieldDict);
+    checkInput(fieldDict, path);
     const dictionary& bf =
         subDictOf(fieldDict, "boundaryField", "{ <patch> { type ...; } }");
 
@@ -450,7 +450,7 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
         )
     )
 {
-    checkNumbers(properties_);
+    checkInput(properties_, properties_.objectPath());
     checkKeywords
     (
         properties_, {"analysisType", "elementType", "material", "bodyForce"}
