@@ -1,7 +1,9 @@
 #include "vtkWriter.H"
 #include "formError.H"
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -13,9 +15,15 @@ void form::writeFileAtomic(const std::string& path, const std::string& text)
     {
         std::ofstream os(tmp);
         os << text;
+        os.flush();
+        os.close();
         if (!os)
         {
-            throw numericalError("cannot write file " + tmp);
+            std::remove(tmp.c_str());
+            throw numericalError
+            (
+                "cannot write file " + tmp + " (disk full?)"
+            );
         }
     }
     if (std::rename(tmp.c_str(), path.c_str()) != 0)
@@ -31,6 +39,32 @@ form::vtkWriter::vtkWriter(const std::string& dir, const std::string& name)
     name_(name)
 {
     ::mkdir(dir_.c_str(), 0755);
+}
+
+
+void form::vtkWriter::resume(double time)
+{
+    series_.clear();
+    next_ = 0;
+    std::ifstream is(dir_ + "/" + name_ + ".pvd");
+    const double tol = 1e-9*std::max(1.0, std::abs(time));
+    for (std::string line; std::getline(is, line);)
+    {
+        const auto t0 = line.find("timestep=\"");
+        const auto f0 = line.find("file=\"");
+        if (t0 == std::string::npos || f0 == std::string::npos) continue;
+        const double t = std::atof(line.c_str() + t0 + 10);
+        const auto f1 = line.find('"', f0 + 6);
+        const std::string file = line.substr(f0 + 6, f1 - f0 - 6);
+        if (t > time + tol) continue;
+        series_.emplace_back(t, file);
+        // name_<index>.vtu
+        const auto u = file.rfind('_');
+        if (u != std::string::npos)
+        {
+            next_ = std::max(next_, std::atoi(file.c_str() + u + 1) + 1);
+        }
+    }
 }
 
 
@@ -147,8 +181,7 @@ void form::vtkWriter::write
         [](const elementResult& r) { return r.equivalentStrain; });
     os << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 
-    const std::string file =
-        name_ + "_" + std::to_string(series_.size()) + ".vtu";
+    const std::string file = name_ + "_" + std::to_string(next_++) + ".vtu";
     writeFileAtomic(dir_ + "/" + file, os.str());
     series_.emplace_back(time, file);
 

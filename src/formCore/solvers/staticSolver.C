@@ -591,7 +591,9 @@ void staticSolver::run
 {
     const double tEnd = steps_.endTime;
     double t = steps_.startTime;
-    double dt = std::min(steps_.deltaT, steps_.maxDeltaT);
+    double dt =
+        nextDeltaT_ > 0
+      ? nextDeltaT_ : std::min(steps_.deltaT, steps_.maxDeltaT);
     // Times closer than this to endTime count as endTime
     const double tiny = 1e-12*std::max(1.0, std::abs(tEnd));
     int step = 0;
@@ -680,7 +682,6 @@ void staticSolver::run
                 );
                 log_<< line;
                 t = t1;
-                if (onConverged) onConverged(report);
                 if
                 (
                     cutbacks == 0
@@ -689,6 +690,8 @@ void staticSolver::run
                 {
                     dt = std::min(dt*steps_.growthFactor, steps_.maxDeltaT);
                 }
+                nextDeltaT_ = dt;
+                if (onConverged) onConverged(report);
                 break;
             }
 
@@ -748,6 +751,26 @@ void staticSolver::setIntegrator(timeIntegrator* integrator)
 int staticSolver::totalIterations() const
 {
     return totalIterations_;
+}
+
+
+resumeState staticSolver::resume() const
+{
+    return
+    {
+        nextDeltaT_, lastIncrement_, lastDeltaT_, previousIncrement_,
+        previousDeltaT_
+    };
+}
+
+
+void staticSolver::resume(const resumeState& s)
+{
+    nextDeltaT_ = s.deltaT;
+    lastIncrement_ = s.lastIncrement;
+    lastDeltaT_ = s.lastDeltaT;
+    previousIncrement_ = s.previousIncrement;
+    previousDeltaT_ = s.previousDeltaT;
 }
 
 } // namespace form

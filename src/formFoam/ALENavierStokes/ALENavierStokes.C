@@ -656,17 +656,20 @@ void Foam::ALENavierStokes::updateFields()
 }
 
 
-void Foam::ALENavierStokes::write(const word& timeName)
+bool Foam::ALENavierStokes::write(const word& timeName)
 {
     // Full precision: the fields and points are the restart state (the
     // mass of a slightly compressible fluid is exp(p/K) V: six digits of
     // p and of the points would change it on a restart)
     const unsigned precision = IOstream::defaultPrecision(17);
     updateFields();
+    const word Uinstance = U_.instance(), pinstance = p_.instance();
     U_.instance() = timeName;
     p_.instance() = timeName;
-    U_.write();
-    p_.write();
+    bool ok = U_.write();
+    ok = p_.write() && ok;
+    U_.instance() = Uinstance;
+    p_.instance() = pinstance;
     if (set_.meshMotion != "none")
     {
         pointIOField pts
@@ -678,9 +681,10 @@ void Foam::ALENavierStokes::write(const word& timeName)
             ),
             mesh_.points()
         );
-        pts.write();
+        ok = pts.write() && ok;
     }
     IOstream::defaultPrecision(precision);
+    return ok;
 }
 
 

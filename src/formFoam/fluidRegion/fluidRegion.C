@@ -595,12 +595,11 @@ Foam::string Foam::fluidRegion::report(scalar t) const
 }
 
 
-void Foam::fluidRegion::write(const word& timeName) const
+bool Foam::fluidRegion::write(const word& timeName) const
 {
     if (ale_)
     {
-        ale_->write(timeName);
-        return;
+        return ale_->write(timeName);
     }
     const std::vector<double> s = cavity_->state();
     IOField<scalar> f
@@ -613,11 +612,10 @@ void Foam::fluidRegion::write(const word& timeName) const
         scalarField(s.size())
     );
     forAll(f, i) f[i] = s[i];
-    if (!f.write())
-    {
-        FatalErrorInFunction
-            << "Writing " << f.objectPath() << " failed" << exit(FatalError);
-    }
+    const unsigned precision = IOstream::defaultPrecision(17);
+    const bool ok = f.write();
+    IOstream::defaultPrecision(precision);
+    return ok;
 }
 
 

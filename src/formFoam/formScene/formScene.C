@@ -962,165 +962,12 @@ void Foam::formScene::updateEntry
 }
 
 
-void Foam::formScene::recordSummary(scalar time, bool first)
-{
-    summaryTime_ = time;
-    const fileName dir = runTime_.path()/"postProcessing";
-    mkDir(dir);
-    const bool append = !first && isFile(dir/"history.dat");
-    std::ofstream os
-    (
-        dir/"history.dat", append ? std::ios::app : std::ios::trunc
-    );
-    os.precision(10);
-    if (!append)
-    {
-        os << "# time";
-        for (const summaryEntry& e : summary_) os << ' ' << e.name;
-        os << '\n';
-    }
-    os << time;
-    for (summaryEntry& e : summary_)
-    {
-        const scalar v = evaluate(e);
-        os << ' ' << v;
-        updateEntry(e, time, v, first);
-    }
-    os << '\n';
-}
-
-
-bool Foam::formScene::replayHistory(scalar restartTime)
-{
-    const fileName file = runTime_.path()/"postProcessing"/"history.dat";
-    if (!isFile(file)) return false;
-    std::ifstream is(file);
-    std::string header;
-    if (!std::getline(is, header) || header.rfind("# time", 0) != 0)
-    {
-        return false;
-    }
-    // Columns by name; entries without a column start afresh
-    std::istringstream hs(header.substr(1));
-    std::vector<std::string> names;
-    for (std::string w; hs >> w;) names.push_back(w);
-    std::vector<label> column(summary_.size(), -1);
-    forAll(summary_, k)
-    {
-        const auto it =
-            std::find(names.begin(), names.end(), summary_[k].name);
-        if (it != names.end()) column[k] = label(it - names.begin());
-    }
-    // The rows before the restart time (later ones belong to the
-    // abandoned continuation and are dropped)
-    std::vector<std::string> kept;
-    bool first = true;
-    const scalar tol = 1e-9*max(mag(restartTime), 1.0);
-    for (std::string line; std::getline(is, line);)
-    {
-        std::istringstream ls(line);
-        std::vector<scalar> v;
-        for (scalar x; ls >> x;) v.push_back(x);
-        if (v.size() != names.size() || v[0] >= restartTime - tol) continue;
-        forAll(summary_, k)
-        {
-            if (column[k] > 0) updateEntry(summary_[k], v[0], v[column[k]], first);
-        }
-        first = false;
-        kept.push_back(line);
-    }
-    is.close();
-    std::ofstream os(file, std::ios::trunc);
-    os << header << '\n';
-    for (const std::string& line : kept) os << line << '\n';
-    return !kept.empty();
-}
-
-
-void Foam::formScene::writeSummary
-(
-    label newtonIterations,
-    label nSteps,
-    label cutbacks,
-    scalar wallTime
-) const
-{
-    const fileName dir = runTime_.path()/"postProcessing";
-    mkDir(dir);
-    const fileName tmp = dir/"summary.writing";
-    {
-        OFstream os(tmp);
-        os  << "FoamFile" << nl << "{" << nl
-            << "    version     2.0;" << nl
-            << "    format      ascii;" << nl
-            << "    class       dictionary;" << nl
-            << "    object      summary;" << nl
-            << "}" << nl << nl;
-        os.precision(10);
-
-        for (const summaryEntry& e : summary_)
-        {
-            if (!e.set && e.atEntry >= 0)
-            {
-                FatalIOErrorInFunction(e.dict)
-                    << "summary entry '" << e.name << "' in " << e.dict.name()
-                    << " was never evaluated: '" << summary_[e.atEntry].name
-                    << "' never reached " << e.atValue << " (it ended at "
-                    << summary_[e.atEntry].curValue << ")"
-                    << exit(FatalIOError);
-            }
-            if (!e.set)
-            {
-                FatalIOErrorInFunction(e.dict)
-                    << "summary entry '" << e.name << "' in " << e.dict.name()
-                    << " was never evaluated: no converged step ended at its"
-                    << " time " << e.time << exit(FatalIOError);
-            }
-            os.writeEntry(e.name, e.value);
-            Info<< "    " << e.name << " = " << e.value << nl;
-        }
-        const bool solid = solids_.size();
-        os.writeEntry
-        (
-            "elementType", solid ? solids_[0].elementType() : word("none")
-        );
-        os.writeEntry
-        (
-            "fluidModel", fluid_ ? fluid_->fluidModel() : word("none")
-        );
-        os.writeEntry
-        (
-            "nElements", solid ? solids_[0].feMesh().feMesh().nElements() : 0
-        );
-        os.writeEntry("nDofs", model().nFreeDofs());
-        if (fluid_ && fluid_->ALE())
-        {
-            os.writeEntry("nFluidUnknowns", model().nUnknowns() - model().nFreeDofs());
-        }
-        os.writeEntry("steps", nSteps);
-        os.writeEntry("newtonIterations", newtonIterations);
-        os.writeEntry
-        (
-            "newtonIterationsPerStep",
-            scalar(newtonIterations)/max(label(1), nSteps)
-        );
-        os.writeEntry("maxIterationsInAStep", maxStepIterations_);
-        os.writeEntry("cutbacks", cutbacks);
-        for (const auto& sw : stepWallTimes_)
-        {
-            os.writeEntry(word(sw.first + "WallTime"), sw.second);
-        }
-        os.writeEntry("wallTime", wallTime);
-    }
-    Foam::mv(tmp, dir/"summary");
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::formScene::formScene(Time& runTime)
 :
     runTime_(runTime),
+    lock_(runTime.path()),
     solution_
     (
         IOobject
@@ -1133,6 +980,7 @@ Foam::formScene::formScene(Time& runTime)
         )
     )
 {
+    checkStart();
     readSolution();
 
     const regionProperties rp(runTime);
@@ -1267,13 +1115,17 @@ Foam::formScene::formScene(Time& runTime)
         );
     }
 
-    if
-    (
-        steps_.startTime > 0
-     && (solids_.empty() || solids_[0].readState(runTime.timeName()))
-    )
+    if (restarted_)
     {
+        if (solids_.size() && !solids_[0].readState(runTime.timeName()))
+        {
+            FatalErrorInFunction
+                << "Restart at time " << runTime.timeName() << ": the state"
+                << " of solid region '" << solids_[0].name() << "' (feU) is"
+                << " missing" << exit(FatalError);
+        }
         if (fluid_) fluid_->readState(runTime.timeName());
+        readRunState();
         model().commit();
         if (integrator_)
         {
@@ -1306,7 +1158,6 @@ Foam::formScene::formScene(Time& runTime)
         // forces) for the first summary record
         form::vecX r;
         model().evaluate(steps_.startTime, r, false);
-        restarted_ = true;
         Info<< "Restarting from the state written at time "
             << runTime.timeName() << endl;
     }
@@ -1336,42 +1187,19 @@ void Foam::formScene::run()
         runTime_.controlDict().getOrDefault<word>("writeControl", "timeStep");
     const scalar writeInterval =
         runTime_.controlDict().getOrDefault<scalar>("writeInterval", 1);
-    const clockTime clock;
+    runStart_ = clock_.elapsedTime();
+    const auto elapsed = [&]() { return clock_.elapsedTime() - runStart_; };
     scalar nextWrite = steps_.startTime + writeInterval;
-    label nSteps = 0;
-    label nIterations = 0;
-    label nCutbacks = 0;
     scalar lastTime = steps_.startTime;
-
-    const auto writeNow = [&](scalar t, label index)
-    {
-        const clockTime outClock;
-        runTime_.setTime(t, index);
-        Info<< "    writing time " << runTime_.timeName() << endl;
-        if (solids_.size()) solids_[0].write();
-        if (integrator_)
-        {
-            const std::vector<double> ds = integrator_->state();
-            IOField<scalar> f
-            (
-                IOobject
-                (
-                    "feDynamics", runTime_.timeName(), solids_[0].mesh(),
-                    IOobject::NO_READ, IOobject::NO_WRITE, false
-                ),
-                scalarField(ds.size())
-            );
-            forAll(f, i) f[i] = ds[i];
-            f.write();
-        }
-        if (contact_) contact_->write(runTime_.timeName(), t);
-        if (fluid_) fluid_->write(runTime_.timeName());
-        model.times().output += outClock.elapsedTime();
-    };
+    // The process step running, its solver (for the run state written
+    // with a time) and the step's name
+    const form::staticSolver* current = nullptr;
+    word currentStep;
 
     // After a restart the history before it is kept and replayed, so
     // that statistics (max, min) and values at earlier times stand
     const bool replayed = restarted_ && replayHistory(steps_.startTime);
+    if (restarted_ && solids_.size()) solids_[0].resumeVTK(steps_.startTime);
     recordSummary(steps_.startTime, !replayed);
 
     // The state at the start (or the restart) is dynamic if the step that
@@ -1449,7 +1277,7 @@ void Foam::formScene::run()
         }
         previousDynamic = stepDynamic;
 
-        const scalar stepClockStart = clock.elapsedTime();
+        const scalar stepClockStart = elapsed();
         form::stepControls sc = steps_;
         sc.startTime = max(ps.startTime, steps_.startTime);
         sc.endTime = ps.endTime;
@@ -1461,6 +1289,14 @@ void Foam::formScene::run()
             model, *linearSolver_, newton_, sc, std::cout
         );
         solver.setIntegrator(stepDynamic ? integrator_.get() : nullptr);
+        // A restart inside this step continues it as the interrupted run
+        // would have: same next step size, same predictor
+        if (restarted_ && ps.name == resumeStep_ && sc.startTime > ps.startTime)
+        {
+            solver.resume(resume_);
+        }
+        current = &solver;
+        currentStep = ps.name;
 
         try
         {
@@ -1468,22 +1304,22 @@ void Foam::formScene::run()
             (
                 [&](const form::stepReport& r)
                 {
-                    ++nSteps;
-                    nCutbacks += r.cutbacks;
+                    ++totals_.steps;
+                    totals_.cutbacks += r.cutbacks;
                     maxStepIterations_ = max(maxStepIterations_, r.iterations);
                     lastTime = r.time;
                     const scalar frac =
                         (r.time - steps_.startTime)
                        /(steps_.endTime - steps_.startTime);
-                    const scalar elapsed = clock.elapsedTime();
-                    const scalar eta = frac > 0 ? elapsed*(1 - frac)/frac : 0;
-                    Info<< "Step " << nSteps << "  t = " << r.time
+                    const scalar wall = elapsed();
+                    const scalar eta = frac > 0 ? wall*(1 - frac)/frac : 0;
+                    Info<< "Step " << totals_.steps << "  t = " << r.time
                         << " (" << label(100*frac + 0.5) << "%)"
                         << "  dt = " << r.deltaT
                         << "  Newton " << r.iterations
                         << (r.cutbacks ? "  cutbacks " : "")
                         << (r.cutbacks ? Foam::name(r.cutbacks) : word())
-                        << "  elapsed " << elapsed << " s  ETA " << eta
+                        << "  elapsed " << wall << " s  ETA " << eta
                         << " s" << endl;
                     if (fluid_) Info<< fluid_->report(r.time).c_str() << endl;
                     if (fluid_ && checkTangent_)
@@ -1534,7 +1370,8 @@ void Foam::formScene::run()
                     if (writeControl == "timeStep")
                     {
                         doWrite =
-                            doWrite || (nSteps % label(writeInterval) == 0);
+                            doWrite
+                         || (totals_.steps % label(writeInterval) == 0);
                     }
                     else if (r.time >= nextWrite - 1e-12*writeInterval)
                     {
@@ -1544,15 +1381,16 @@ void Foam::formScene::run()
                             nextWrite += writeInterval;
                         }
                     }
-                    if (doWrite) writeNow(r.time, nSteps);
+                    if (doWrite) writeTime(r.time, &solver, ps.name);
                 }
             );
-            nIterations += solver.totalIterations();
+            totals_.iterations += solver.totalIterations();
+            current = nullptr;
             if (schedule_.size() > 1)
             {
                 stepWallTimes_.push_back
                 (
-                    {ps.name, clock.elapsedTime() - stepClockStart}
+                    {ps.name, elapsed() - stepClockStart}
                 );
             }
         }
@@ -1576,7 +1414,7 @@ void Foam::formScene::run()
             // overwrite it
             if (lastTime > steps_.startTime)
             {
-                writeNow(lastTime, nSteps);
+                writeTime(lastTime, current, currentStep);
             }
             FatalErrorInFunction
                 << err.what() << nl
@@ -1588,9 +1426,12 @@ void Foam::formScene::run()
         }
     }
 
-    const scalar wallTime = clock.elapsedTime();
+    const scalar wallTime = totals_.wallTime + elapsed();
     Info<< nl << "Summary" << nl;
-    writeSummary(nIterations, nSteps, nCutbacks, wallTime);
+    writeSummary
+    (
+        totals_.iterations, totals_.steps, totals_.cutbacks, wallTime
+    );
 
     if (contact_) contact_->reportUntouched();
     const form::phaseTimes& t = model.times();
@@ -1605,11 +1446,11 @@ void Foam::formScene::run()
         << "    solve           " << t.solve << nl
         << "    output          " << t.output << nl
         << "    total (wall)    " << wallTime << nl
-        << "    steps " << nSteps << ", Newton iterations "
-        << nIterations << nl;
-    if (nIterations > 0)
+        << "    steps " << totals_.steps << ", Newton iterations "
+        << totals_.iterations << nl;
+    if (totals_.iterations > 0)
     {
-        const scalar n = nIterations;
+        const scalar n = totals_.iterations;
         Info<< "Time per Newton iteration (ms): assembly "
             << 1e3*t.assembly/n << ", contact " << 1e3*t.contact/n
             << ", fluid " << 1e3*t.fluid/n << ", linear solve " << 1e3*(t.factorisation + t.solve)/n << nl;

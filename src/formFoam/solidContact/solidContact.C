@@ -306,11 +306,12 @@ Foam::scalar Foam::solidContact::toolPosition
 }
 
 
-void Foam::solidContact::write(const word& timeName, scalar t) const
+bool Foam::solidContact::write(const word& timeName, scalar t) const
 {
     const fileName dir = runTime_.path()/"postProcessing"/"contact"/timeName;
     mkDir(dir);
     const form::vecX& U = solid_.model().U();
+    bool ok = true;
     for (const form::contactPairSpec& ps : model_->pairs())
     {
         std::ofstream os(dir/(ps.name + ".dat"));
@@ -331,6 +332,8 @@ void Foam::solidContact::write(const word& timeName, scalar t) const
                 << r.slip << ' ' << (r.closed ? 1 : 0) << ' ' << r.slipRate
                 << '\n';
         }
+        os.flush();
+        ok = bool(os) && ok;
     }
     std::ofstream os(dir/"tools.dat");
     os.precision(10);
@@ -346,6 +349,8 @@ void Foam::solidContact::write(const word& timeName, scalar t) const
         }
         os << "\n\n";
     }
+    os.flush();
+    return bool(os) && ok;
 }
 
 

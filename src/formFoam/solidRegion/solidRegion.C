@@ -604,28 +604,20 @@ Foam::string Foam::solidRegion::describe() const
 }
 
 
-void Foam::solidRegion::write()
+bool Foam::solidRegion::write()
 {
     const word timeName = runTime_.timeName();
-    const scalar time = runTime_.value();
-    const label timeIndex = runTime_.timeIndex();
     const form::feMesh& fe = feMesh_->feMesh();
     const form::matX U = model_->displacement();
     const std::vector<form::elementResult> results = model_->elementResults();
 
-    // Fields go to a temporary instance that is renamed when complete
-    // (OpenFOAM writes fields to the current time name: switch the time's
-    // name to the temporary one while writing)
-    const word tmpInstance = "." + timeName + ".writing";
-    const fileName tmpDir = runTime_.path()/tmpInstance;
-    if (isDir(tmpDir)) rmDir(tmpDir);
-    runTime_.setTime(instant(time, tmpInstance), timeIndex);
-
+    // (formScene::writeTime names the time with the temporary directory
+    // of the time being written)
     const auto io = [&](const word& fieldName)
     {
         return IOobject
         (
-            fieldName, tmpInstance, *mesh_,
+            fieldName, timeName, *mesh_,
             IOobject::NO_READ, IOobject::NO_WRITE, false
         );
     };
@@ -736,7 +728,15 @@ void Foam::solidRegion::write()
         }
     }
 
-    bool ok = true;
+    // Results at the case's writePrecision; the restart state at full
+    // precision (a restart reproduces the run to round-off)
+    bool ok = pointD.write();
+    ok = D.write() && ok;
+    ok = sigma.write() && ok;
+    ok = sigmaEq.write() && ok;
+    ok = p.write() && ok;
+    ok = epsilonEq.write() && ok;
+    const unsigned precision = IOstream::defaultPrecision(17);
     if (nHist) ok = feHistory.write() && ok;
     if (model_->contact())
     {
@@ -755,34 +755,25 @@ void Foam::solidRegion::write()
         forAll(released, i) released[i] = rl[i];
         ok = released.write() && ok;
     }
-    ok = pointD.write() && ok;
-    ok = D.write() && ok;
-    ok = sigma.write() && ok;
-    ok = sigmaEq.write() && ok;
-    ok = p.write() && ok;
-    ok = epsilonEq.write() && ok;
     ok = feU.write() && ok;
-    runTime_.setTime(instant(time, timeName), timeIndex);
-    if (!ok)
-    {
-        FatalErrorInFunction
-            << "Writing the fields of region '" << name_ << "' to "
-            << tmpDir << " failed" << exit(FatalError);
-    }
+    IOstream::defaultPrecision(precision);
+    return ok;
+}
 
-    // Move region fields into place: <time>/<region>
-    const fileName timeDir = runTime_.path()/timeName;
-    mkDir(timeDir);
-    if (isDir(timeDir/name_)) rmDir(timeDir/name_);
-    if (!Foam::mv(tmpDir/name_, timeDir/name_))
-    {
-        FatalErrorInFunction
-            << "Cannot move " << tmpDir/name_ << " to " << timeDir/name_
-            << exit(FatalError);
-    }
-    rmDir(tmpDir);
 
-    vtk_->write(time, fe, U, results);
+void Foam::solidRegion::writeVTK()
+{
+    vtk_->write
+    (
+        runTime_.value(), feMesh_->feMesh(), model_->displacement(),
+        model_->elementResults()
+    );
+}
+
+
+void Foam::solidRegion::resumeVTK(scalar restartTime)
+{
+    vtk_->resume(restartTime);
 }
 
 
