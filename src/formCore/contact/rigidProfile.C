@@ -412,6 +412,7 @@ profileProjection rigidProfile::project(const Eigen::Vector2d& y) const
         {
             best = c;
             best.piece = static_cast<int>(i);
+            best.vertex = !pieces_[i].line && pieces_[i].R == 0;
             bestInside = inside;
             bestDist = dist;
         }

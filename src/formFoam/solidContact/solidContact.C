@@ -122,6 +122,81 @@ bool Foam::solidContact::declared(const Time& runTime)
 }
 
 
+void Foam::solidContact::checkOrientation
+(
+    const std::vector<form::rigidToolSpec>& tools,
+    const std::vector<form::contactPairSpec>& pairs
+) const
+{
+    const form::feMesh& fe = solid_.feMesh().feMesh();
+    const scalar t0 = runTime_.startTime().value();
+    for (const form::contactPairSpec& ps : pairs)
+    {
+        if (ps.tool.empty()) continue;
+        const form::rigidToolSpec* tool = nullptr;
+        for (const auto& t : tools) if (t.name == ps.tool) tool = &t;
+        if (!tool) continue;
+        const Eigen::Vector2d d =
+            tool->translation && !tool->forceControlled
+          ? tool->translation(t0) : Eigen::Vector2d::Zero();
+
+        // Outward normals of the patch at its nodes: the sum of the unit
+        // normals of its faces, each pointing away from its element
+        std::map<int, Eigen::Vector2d> normals;
+        for (const form::feFace& f : fe.faceSets.at(ps.faceSet))
+        {
+            const form::elementBlock& blk = fe.blocks[f.block];
+            const int* en = blk.nodes(f.element);
+            Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+            for (int a = 0; a < blk.nodesPerElement; ++a)
+            {
+                centre += fe.X.row(en[a]).transpose();
+            }
+            centre /= blk.nodesPerElement;
+            const Eigen::Vector2d A = fe.X.row(f.nodes.front()).transpose();
+            const Eigen::Vector2d B = fe.X.row(f.nodes.back()).transpose();
+            Eigen::Vector2d n(B(1) - A(1), A(0) - B(0));
+            if (n.norm() == 0) continue;
+            n.normalize();
+            if ((centre - 0.5*(A + B)).dot(n) > 0) n = -n;
+            for (const int node : f.nodes)
+            {
+                auto it = normals.emplace(node, Eigen::Vector2d::Zero()).first;
+                it->second += n;
+            }
+        }
+        // A tool faces the patch when its outward normal at the closest
+        // point opposes the patch's normal; end points and sharp corners
+        // (whose normal points at any node) do not tell
+        label facing = 0, backing = 0;
+        for (const auto& nn : normals)
+        {
+            const Eigen::Vector2d y = fe.X.row(nn.first).transpose() - d;
+            const form::profileProjection p = tool->profile->project(y);
+            if (p.vertex || nn.second.norm() == 0) continue;
+            const scalar c = p.normal.dot(nn.second.normalized());
+            if (c < -0.1) ++facing;
+            if (c > 0.1) ++backing;
+        }
+        if (backing > 0 && facing == 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Tool '" << ps.tool.c_str() << "' in " << dict_.name()
+                << " turns its back on patch '" << ps.faceSet.c_str()
+                << "' of pair '" << ps.name.c_str() << "': at every node"
+                << " of the patch the tool's outward normal points the"
+                << " same way as the body's." << nl
+                << "    Rule: walking along the points of 'profile', the"
+                << " tool's solid lies on the LEFT (counter-clockwise"
+                << " around the tool), so that its outward normal points"
+                << " towards the body. Reverse the order of the points of"
+                << " tools/" << ps.tool.c_str() << "/profile."
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
 Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
 :
     runTime_(runTime),
@@ -196,6 +271,21 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
         for (const std::string& patch : {ps.faceSet, ps.targetFaceSet})
         {
             if (patch.empty()) continue;
+            if
+            (
+                !faceSets.count(patch)
+             && solid_.mesh().boundaryMesh().findPatchID(patch) >= 0
+            )
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Patch '" << patch.c_str() << "' in " << pd.name()
+                    << " (entry '"
+                    << (patch == ps.faceSet ? "patch" : "targetPatch")
+                    << "') is an empty or wedge patch (the front and back"
+                    << " of the 2D mesh): it has no edges in the plane and"
+                    << " cannot carry contact. Use a patch on the outline"
+                    << " of the region" << exit(FatalIOError);
+            }
             if (!faceSets.count(patch)
              || solid_.mesh().boundaryMesh().findPatchID(patch) < 0)
             {
@@ -222,6 +312,8 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
         FatalIOErrorInFunction(pdict)
             << "No contact pairs in " << pdict.name() << exit(FatalIOError);
     }
+
+    checkOrientation(tools, pairs);
 
     form::contactControls controls;
     controls.epsilonN = dict_.getOrDefault<scalar>("epsilonN", 0);
