@@ -9,6 +9,7 @@ Description
 #include "solidElement.H"
 #include "formError.H"
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -333,6 +334,38 @@ contactModel::contactModel
         const double rbar = nRadius ? radiusSum/nRadius : 0;
         depth = 2*M_PI*std::max(rbar, spacing);
     }
+    // Ranges: 0 (or absent) selects the automatic value. The
+    // regularisation length sqrt(epsilonN) must stay well below the node
+    // spacing, or contact would act across gaps of whole elements
+    const auto number = [](double v)
+    {
+        char buf[32];
+        std::snprintf(buf, sizeof(buf), "%.6g", v);
+        return std::string(buf);
+    };
+    const auto check = [&](const char* key, double v, double max,
+                          const std::string& why)
+    {
+        if (!std::isfinite(v) || v < 0 || v > max)
+        {
+            throw inputError
+            (
+                key,
+                "out of range: " + number(v) + " (valid: 0 for the"
+                " automatic value, or a positive value" + why + ")"
+            );
+        }
+    };
+    check
+    (
+        "epsilonN", controls.epsilonN, std::pow(0.1*spacing, 2),
+        " up to (0.1 l)^2 = " + number(std::pow(0.1*spacing, 2))
+      + ", l = " + number(spacing) + " the mean spacing of the"
+        " contactor nodes: sqrt(epsilonN) is the gap over which the"
+        " regularised contact law acts"
+    );
+    check("epsilonT", controls.epsilonT, HUGE_VAL, "");
+    check("stiffness", controls.stiffness, HUGE_VAL, "");
     // Automatic split of the regularised law g f = epsN k = 1e-10 E l^2:
     // the knee of w at a pressure of about 1e-7 E (contactModel.H)
     m.k = controls.stiffness > 0 ? controls.stiffness : 1e-4*modulus*depth;

@@ -9,6 +9,7 @@ Description
 #include "quadShape.H"
 #include "formError.H"
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -248,6 +249,21 @@ void hydrostaticCavity::evaluate
         (
             "fluid cavity '" + spec_.name + "': non-finite pressure"
         );
+    }
+    // Withdrawing more fluid than the cavity holds: no state can follow
+    // (the fluid volume V_0 + V_inj would be <= 0), whatever the step
+    if (volumeControlled() && !(spec_.initialVolume + injected(t) > 0))
+    {
+        char msg[256];
+        std::snprintf
+        (
+            msg, sizeof(msg),
+            "at t = %g the injected volume %g withdraws all the fluid of"
+            " cavity '%s' (it holds %g at the start): the fluid volume"
+            " V_0 + V_inj must stay positive",
+            t, injected(t), spec_.name.c_str(), spec_.initialVolume
+        );
+        throw inputError("injectedVolume", msg);
     }
     std::vector<int> dofs;
     vecX g;

@@ -147,6 +147,39 @@ void Foam::formScene::readSolution()
     positive("maxIterations", newton_.maxIterations);
     positive("forceTolerance", newton_.forceTolerance);
     positive("energyTolerance", newton_.energyTolerance);
+    const auto below = [&](const char* key, scalar v, scalar max, const char* why)
+    {
+        if (!(v <= max))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry '" << key << "' in " << d.name() << " is out of"
+                << " range: " << v << " > " << max << " (" << why << ")"
+                << exit(FatalIOError);
+        }
+    };
+    below
+    (
+        "minDeltaT", steps_.minDeltaT, steps_.deltaT,
+        "the smallest step after cutbacks cannot exceed deltaT of"
+        " system/controlDict"
+    );
+    below
+    (
+        "forceTolerance", newton_.forceTolerance, 0.1,
+        "a relative tolerance; 1e-8 is the default"
+    );
+    below
+    (
+        "energyTolerance", newton_.energyTolerance, 0.1,
+        "a relative tolerance; 1e-14 is the default"
+    );
+    below("maxIterations", newton_.maxIterations, 1000, "Newton iterations");
+    if (!(steps_.maxCutbacks >= 0 && steps_.easyIterations >= 0))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entries 'maxCutbacks' and 'growthIterations' in " << d.name()
+            << " must be >= 0" << exit(FatalIOError);
+    }
     if (steps_.endTime <= steps_.startTime)
     {
         FatalErrorInFunction
@@ -419,7 +452,7 @@ void Foam::formScene::applyActions(const processStep& step)
         a.stream() >> names;
         for (const word& c : names)
         {
-            comps.append(planeComponent(c, d));
+            comps.append(planeComponent(c, d, s.analysis()));
         }
         (void)key;
         return comps;
@@ -493,7 +526,7 @@ void Foam::formScene::applyActions(const processStep& step)
             labelList comps;
             for (const word& c : p.get<wordList>("components"))
             {
-                comps.append(planeComponent(c, p));
+                comps.append(planeComponent(c, p, s.analysis()));
             }
             Info<< "    pin " << pe.keyword() << " at "
                 << p.get<point>("point") << " components " << comps << nl;
@@ -758,7 +791,7 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
     }
     if (type == "toolForce" || type == "toolPosition")
     {
-        const label comp = planeComponent(ed.get<word>("component"), ed);
+        const label comp = planeComponent(ed.get<word>("component"), ed, solids_[0].analysis());
         const word tool = ed.get<word>("tool");
         return e.scale*
         (
@@ -790,7 +823,7 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         const Eigen::MatrixXd P =
             s.patchPoints(ed.get<word>("patch"), ed, true);
         const Eigen::VectorXd c =
-            P.col(planeComponent(ed.get<word>("component"), ed));
+            P.col(planeComponent(ed.get<word>("component"), ed, solids_[0].analysis()));
         value =
             ed.getOrDefault<word>("extreme", "max") == "max"
           ? c.maxCoeff() : c.minCoeff();
@@ -830,7 +863,7 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
     }
     else
     {
-        const label comp = planeComponent(ed.get<word>("component"), ed);
+        const label comp = planeComponent(ed.get<word>("component"), ed, solids_[0].analysis());
         if (type == "displacement")
         {
             value = s.displacementAt(ed.get<point>("point"), comp, ed);
@@ -1397,11 +1430,19 @@ void Foam::formScene::run()
         catch (const form::inputError& err)
         {
             // Input that only shows as wrong once the run meets it (e.g.
-            // a force-controlled tool that can never touch the body)
+            // a force-controlled tool that can never touch the body, oil
+            // withdrawn beyond the cavity's volume); the last converged
+            // state is kept
             model.revert();
+            if (lastTime > steps_.startTime)
+            {
+                writeTime(lastTime, current, currentStep);
+            }
             const fileName where =
                 contact_ && contact_->hasTool(err.entry())
               ? runTime_.path()/"constant"/"contactProperties"
+              : fluid_ && err.entry() == "injectedVolume"
+              ? runTime_.path()/"constant"/fluid_->name()/"fluidProperties"
               : fileName(runTime_.path()/"system"/"solidSolution");
             FatalErrorInFunction
                 << "Entry '" << err.entry().c_str() << "' in " << where

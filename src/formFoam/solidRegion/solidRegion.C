@@ -152,6 +152,24 @@ void Foam::solidRegion::release
         for (const label c : components) model_->releaseConstraint(nodes, c);
         return;
     }
+    // Something to release: a constrained dof of the patch in each
+    // component named
+    const int nDim = model_->nDim();
+    for (const label c : components)
+    {
+        bool any = false;
+        for (const int n : nodes) any = any || model_->constrained(n*nDim + c);
+        if (!any)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'release' in " << dict.name() << ": patch '"
+                << patch << "' has no constraint in component "
+                << (analysis_ == form::analysisType::axisymmetric
+                    ? (c == 0 ? "r" : "z") : (c == 0 ? "x" : "y"))
+                << " to release (its nodes are free there, or already"
+                << " released)" << exit(FatalIOError);
+        }
+    }
     // Current reactions
     form::vecX r;
     model_->evaluate(t0, r, false);
@@ -239,7 +257,7 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
         {
             for (const word& c : pd.get<wordList>("components"))
             {
-                comps.append(planeComponent(c, pd));
+                comps.append(planeComponent(c, pd, analysis_));
             }
         }
         else
