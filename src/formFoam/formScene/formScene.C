@@ -9,6 +9,7 @@
 #include "clockTime.H"
 #include "autoSolver.H"
 #include "springbackMeasure.H"
+#include "supportCheck.H"
 #include <algorithm>
 #include <fstream>
 #include <iostream>
@@ -188,6 +189,69 @@ void Foam::formScene::readSolution()
     }
 
     linearSolverName_ = d.getOrDefault<word>("linearSolver", "auto");
+}
+
+
+void Foam::formScene::checkSupport(const word& stepName) const
+{
+    if (solids_.empty()) return;
+    const solidRegion& s = solids_[0];
+    const form::feMesh& fe = s.feMesh().feMesh();
+    const form::solidModel& m = s.model();
+    // Contact and fluid pressure support a piece only once loaded: a
+    // piece they touch counts as supported
+    std::vector<int> supported;
+    wordList patches;
+    if (contact_)
+    {
+        for (const auto& ps : contact_->model().pairs())
+        {
+            patches.append(word(ps.faceSet));
+            if (!ps.targetFaceSet.empty()) patches.append(word(ps.targetFaceSet));
+        }
+    }
+    if (fluid_) patches.append(fluid_->interfacePatches());
+    for (const word& p : patches)
+    {
+        const auto it = fe.faceSets.find(p);
+        if (it == fe.faceSets.end()) continue;
+        for (const form::feFace& f : it->second)
+        {
+            supported.insert(supported.end(), f.nodes.begin(), f.nodes.end());
+        }
+    }
+    const std::vector<form::freePiece> free = form::unsupportedPieces
+    (
+        fe, s.analysis(), [&m](int dof) { return m.constrained(dof); },
+        supported
+    );
+    if (free.empty()) return;
+    const form::freePiece& f = free[0];
+    std::ostringstream what;
+    if (schedule_.size() > 1) what << " in process step '" << stepName << "'";
+    what << ": ";
+    if (f.nPieces > 1)
+    {
+        what<< "its piece " << f.piece + 1 << " of " << f.nPieces << " ("
+            << f.nElements << " elements around (" << f.centre(0) << " "
+            << f.centre(1) << "); pieces share no node)";
+    }
+    else
+    {
+        what<< "the body";
+    }
+    FatalErrorInFunction
+        << "Solid region '" << s.name() << "' is not supported"
+        << what.str().c_str()
+        << " can move as a rigid body: " << f.description.c_str()
+        << "." << nl
+        << "    A static analysis needs enough constraints to hold it:"
+        << " fixedDisplacement (or symmetry) conditions in 0/" << s.name()
+        << "/D, a pin in constant/processSchedule, or contact."
+        << (f.nPieces > 1
+            ? " Bodies meant to be one need merged points (mergePatchPairs"
+              " in blockMeshDict)" : "")
+        << exit(FatalError);
 }
 
 
@@ -1278,6 +1342,17 @@ void Foam::formScene::run()
         }
         applyActions(ps);
         if (schedule_.size() > 1) Info<< endl;
+        if
+        (
+            !(
+                integrator_
+             && ps.actions.getOrDefault<word>("analysis", "dynamic")
+             == "dynamic"
+            )
+        )
+        {
+            checkSupport(ps.name);
+        }
 
         // A dynamic scene may run single process steps statically (e.g.
         // springback); a dynamic step after a static one starts at rest
