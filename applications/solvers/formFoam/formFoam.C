@@ -27,7 +27,10 @@ Usage
 #include "sigFpe.H"
 #include "formScene.H"
 #include "formError.H"
+#include "IFstream.H"
+#include "OSspecific.H"
 #include <new>
+#include <unistd.h>
 
 using namespace Foam;
 
@@ -84,6 +87,95 @@ namespace
     std::exit(1);
 }
 
+//- Edit distance of two keywords (for "did you mean")
+label distance(const std::string& a, const std::string& b)
+{
+    std::vector<label> d(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) d[j] = label(j);
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        label prev = d[0];
+        d[0] = label(i);
+        for (std::size_t j = 1; j <= b.size(); ++j)
+        {
+            const label cur = d[j];
+            d[j] = min(min(d[j] + 1, d[j - 1] + 1), prev + (a[i-1] != b[j-1]));
+            prev = cur;
+        }
+    }
+    return d[b.size()];
+}
+
+
+//- The entries of system/controlDict that OpenFOAM's Time needs, checked
+//  before Time reads them, so that a missing or misspelt one is named as
+//  the user wrote it (Time would report e.g. 'writeFrequency not found')
+void checkControlDict(const fileName& caseDir)
+{
+    const fileName file = caseDir/"system"/"controlDict";
+    if (!isFile(file))
+    {
+        FatalErrorInFunction
+            << "No system/controlDict in the case directory " << caseDir
+            << ": is this an OpenFOAM case? (run formFoam in the case"
+            << " directory, or give it with -case)" << exit(FatalError);
+    }
+    IFstream is(file);
+    const dictionary d(is);
+    wordList required{"deltaT", "writeInterval"};
+    if (d.getOrDefault<word>("startFrom", "startTime") == "startTime")
+    {
+        required.append("startTime");
+    }
+    if (d.getOrDefault<word>("stopAt", "endTime") == "endTime")
+    {
+        required.append("endTime");
+    }
+    for (const word& key : required)
+    {
+        if (d.found(key)) continue;
+        word near;
+        for (const entry& e : d)
+        {
+            if (distance(e.keyword(), key) <= 2) near = e.keyword();
+        }
+        FatalIOErrorInFunction(d)
+            << "Entry '" << key << "' missing in " << file
+            << (
+                   near.empty() ? std::string()
+                 : " (is '" + near + "' meant to be '" + key + "'?)"
+               ).c_str()
+            << exit(FatalIOError);
+    }
+}
+
+
+//- OpenFOAM case paths cannot hold white space (OpenFOAM strips it, and
+//  then looks for another directory)
+void checkCasePath(int argc, char* argv[])
+{
+    std::string path;
+    for (int i = 1; i + 1 < argc; ++i)
+    {
+        if (std::string(argv[i]) == "-case") path = argv[i + 1];
+    }
+    if (path.empty() || path[0] != '/')
+    {
+        char cwd[4096];
+        if (::getcwd(cwd, sizeof(cwd)))
+        {
+            path = path.empty() ? std::string(cwd) : std::string(cwd) + "/" + path;
+        }
+    }
+    if (path.find_first_of(" \t\n") != std::string::npos)
+    {
+        FatalErrorInFunction
+            << "The case directory '" << path.c_str() << "' contains a space:"
+            << " OpenFOAM case paths cannot contain spaces. Move or rename"
+            << " the case (or a directory above it)" << exit(FatalError);
+    }
+}
+
 } // namespace
 
 
@@ -106,6 +198,7 @@ int main(int argc, char *argv[])
             " columns up to 3000 fluid unknowns, above only those of its"
             " coupling with the solid)"
         );
+        checkCasePath(argc, argv);
         argsPtr = new argList(argc, argv);
         argList& args = *argsPtr;
         if (!args.checkRootCase())
@@ -119,6 +212,7 @@ int main(int argc, char *argv[])
         // from now on
         entry::globalInputMode = entry::inputMode::ERROR;
 
+        checkControlDict(args.path());
         #include "createTime.H"
 
         formScene scene(runTime);

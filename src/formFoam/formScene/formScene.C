@@ -481,7 +481,15 @@ void Foam::formScene::readSchedule()
         t0 = ps.endTime;
         schedule_.push_back(ps);
     }
-    if (schedule_.empty() || mag(t0 - steps_.endTime) > 1e-9*mag(t0) + 1e-12)
+    if (schedule_.empty())
+    {
+        FatalIOErrorInFunction(steps)
+            << "No process steps in " << steps.name() << ": give at least"
+            << " one, e.g. steps { load { endTime "
+            << steps_.endTime << "; } } (or remove the file: one step to"
+            << " endTime)" << exit(FatalIOError);
+    }
+    if (mag(t0 - steps_.endTime) > 1e-9*mag(t0) + 1e-12)
     {
         FatalIOErrorInFunction(steps)
             << "The last process step in " << steps.name() << " ends at "
@@ -1081,6 +1089,16 @@ Foam::formScene::formScene(Time& runTime)
     readSolution();
 
     const regionProperties rp(runTime);
+    for (const word& kind : rp.toc())
+    {
+        if (kind != "solid" && kind != "fluid")
+        {
+            FatalErrorInFunction
+                << "Unknown kind of region '" << kind << "' in"
+                << " constant/regionProperties; valid kinds: solid fluid"
+                << exit(FatalError);
+        }
+    }
     const wordList fluidNames(rp.found("fluid") ? rp["fluid"] : wordList());
     const wordList solidNames(rp.found("solid") ? rp["solid"] : wordList());
     if (fluidNames.size() > 1)
