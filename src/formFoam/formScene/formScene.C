@@ -499,7 +499,7 @@ void Foam::formScene::readSchedule()
 }
 
 
-void Foam::formScene::applyActions(const processStep& step)
+void Foam::formScene::applyActions(const processStep& step, bool apply)
 {
     const dictionary& d = step.actions;
     if (solids_.empty())
@@ -552,6 +552,11 @@ void Foam::formScene::applyActions(const processStep& step)
         }
         for (const auto& t : targets)
         {
+            if (!apply)
+            {
+                s.patchNodes(t.first, d);
+                continue;
+            }
             Info<< "    " << key.c_str() << " " << t.first << " components "
                 << t.second << nl;
             if (key == "release")
@@ -581,10 +586,17 @@ void Foam::formScene::applyActions(const processStep& step)
                 << exit(FatalIOError);
         }
         const wordList tools = d.get<wordList>("releaseTools");
-        Info<< "    release tools " << tools << nl;
-        // (after a restart the tools' released flags and loads come with
-        // the state, and releaseTools skips released tools)
-        contact_->releaseTools(tools, d, step.startTime, step.endTime);
+        if (!apply)
+        {
+            for (const word& t : tools) contact_->toolIndex(t, d);
+        }
+        else
+        {
+            Info<< "    release tools " << tools << nl;
+            // (after a restart the tools' released flags and loads come
+            // with the state, and releaseTools skips released tools)
+            contact_->releaseTools(tools, d, step.startTime, step.endTime);
+        }
     }
     if (d.found("pin"))
     {
@@ -600,9 +612,11 @@ void Foam::formScene::applyActions(const processStep& step)
             {
                 comps.append(planeComponent(c, p, s.analysis()));
             }
-            Info<< "    pin " << pe.keyword() << " at "
-                << p.get<point>("point") << " components " << comps << nl;
-            s.pin(p.get<point>("point"), comps, p);
+            const point x = p.get<point>("point");
+            if (!apply) continue;
+            Info<< "    pin " << pe.keyword() << " at " << x
+                << " components " << comps << nl;
+            s.pin(x, comps, p);
         }
     }
     if (d.found("prescribe"))
@@ -620,6 +634,11 @@ void Foam::formScene::applyActions(const processStep& step)
                     << "Unknown boundary condition type '" << type << "' in "
                     << bc.name() << nl << "    Valid types: "
                     << solidRegion::conditionTypes() << exit(FatalIOError);
+            }
+            if (!apply)
+            {
+                s.patchNodes(pe.keyword(), pd);
+                continue;
             }
             Info<< "    prescribe " << pe.keyword() << " " << type << nl;
             s.applyCondition(pe.keyword(), bc);
@@ -1211,6 +1230,8 @@ Foam::formScene::formScene(Time& runTime)
     }
 
     readSchedule();
+    // The whole schedule is checked now, not when each step begins
+    for (const processStep& ps : schedule_) applyActions(ps, false);
     readSummary();
 
     // Inertia: only for a dynamic analysis

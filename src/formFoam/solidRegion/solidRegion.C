@@ -152,22 +152,24 @@ void Foam::solidRegion::release
         for (const label c : components) model_->releaseConstraint(nodes, c);
         return;
     }
-    // Something to release: a constrained dof of the patch in each
-    // component named
+    // Something to release: the patch's own constraint in each component
+    // named (most of its nodes held; a free patch's end nodes may be held
+    // by a neighbouring patch, whose constraint is not the one meant)
     const int nDim = model_->nDim();
     for (const label c : components)
     {
-        bool any = false;
-        for (const int n : nodes) any = any || model_->constrained(n*nDim + c);
-        if (!any)
+        label held = 0;
+        for (const int n : nodes) held += model_->constrained(n*nDim + c);
+        if (2*held < label(nodes.size()))
         {
             FatalIOErrorInFunction(dict)
                 << "Entry 'release' in " << dict.name() << ": patch '"
                 << patch << "' has no constraint in component "
                 << (analysis_ == form::analysisType::axisymmetric
                     ? (c == 0 ? "r" : "z") : (c == 0 ? "x" : "y"))
-                << " to release (its nodes are free there, or already"
-                << " released)" << exit(FatalIOError);
+                << " to release: " << held << " of its " << label(nodes.size())
+                << " nodes are held (by a neighbouring patch), the others"
+                << " are free or already released" << exit(FatalIOError);
         }
     }
     // Current reactions
