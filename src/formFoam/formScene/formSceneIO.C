@@ -132,7 +132,8 @@ void Foam::formScene::checkStart()
             const fileName t = n.substr(1, n.size() - 5);
             if (!isDir(path/t))
             {
-                Info<< "Restoring time " << t << " from " << path/d
+                Info<< "Restoring time " << t.c_str() << " from "
+                    << (path/d).c_str()
                     << " (a run was killed while rewriting it)" << endl;
                 Foam::mv(path/d, path/t);
             }
@@ -143,8 +144,8 @@ void Foam::formScene::checkStart()
         }
         else if (ends(".writing"))
         {
-            Info<< "Removing " << path/d << ": an incomplete write of a run"
-                << " that was killed" << endl;
+            Info<< "Removing " << (path/d).c_str() << ": an incomplete write"
+                << " of a run that was killed" << endl;
             rmDir(path/d);
         }
     }
@@ -177,8 +178,6 @@ void Foam::formScene::checkStart()
             << "The start time " << startName << " (system/controlDict:"
             << " startFrom " << runTime_.controlDict().getOrDefault<word>
                ("startFrom", "startTime")
-            << ", startTime "
-            << runTime_.controlDict().getOrDefault<word>("startTime", "0")
             << ") has no time directory in " << path << nl
             << available().c_str()
             << "    To restart, set startTime to one of them (or startFrom"
@@ -263,6 +262,9 @@ void Foam::formScene::writeTime
     // fields to the time's name, so the time is named after it meanwhile
     runTime_.setTime(instant(t, tmpName), totals_.steps);
     bool ok = true;
+    std::string streamError;
+    try
+    {
     if (solids_.size())
     {
         ok = solids_[0].write() && ok;
@@ -331,6 +333,14 @@ void Foam::formScene::writeTime
         ok = d.regIOobject::write() && ok;
         IOstream::defaultPrecision(precision);
     }
+    }
+    catch (const Foam::error& err)
+    {
+        // OpenFOAM's streams report a failed write (a full disk) as a
+        // fatal error: the transaction fails like any other write
+        ok = false;
+        streamError = err.message();
+    }
     runTime_.setTime(instant(t, timeName), totals_.steps);
 
     // Every file complete? (a full disk truncates files, and OpenFOAM's
@@ -357,7 +367,11 @@ void Foam::formScene::writeTime
     };
     if (!ok || !isFile(runStateFile(tmpDir)))
     {
-        failed("a file could not be written completely (disk full?)");
+        failed
+        (
+            "a file could not be written completely (disk full?)"
+          + (streamError.empty() ? std::string() : ": " + streamError)
+        );
     }
     // Contact results and the VTK frame before the rename: a restart
     // from this time then finds them (a restart from an earlier time
