@@ -1,5 +1,15 @@
 #!/usr/bin/env bash
-# Bad input must stop formFoam with a clear message naming file and entry.
+# Bad input must stop formFoam with a clear message naming file and entry,
+# and no input may end in an abort, a stack trace or a signal (noAbort in
+# testFunctions checks every case; the last check counts them). Classes:
+#   unknown names and mistyped entries; values out of range; numbers that
+#   are not finite (nan, inf, 1e400); a word where a dictionary belongs;
+#   duplicate keywords; components of another analysis; meshes that cannot
+#   be used; bodies that are not supported (rigid-body modes); process
+#   schedules, contact and fluid input that cannot run; case set-up
+#   (controlDict entries, regionProperties, a path with spaces, a start
+#   time with no state); and valid input that must run: steps with nothing
+#   to do (issue 18, section 1).
 . "$(dirname "$0")/testFunctions"
 
 base=$(caseCopy cooksMembrane)
@@ -60,4 +70,156 @@ tryCase "inverted elements (huge load)" "det F = .* <= 0.*|no convergence.*cutba
     "foamDictionary -entry material/type -set neoHookean $props >/dev/null;
      sed -i 's/traction (0 0.0625 0)/traction (0 1e3 0)/' 0/solid/D;
      foamDictionary -entry minDeltaT -set 0.01 system/solidSolution >/dev/null"
+
+# Numbers that are not finite, and words where dictionaries belong
+material="constant/solid/solidProperties"
+E='s/^    E .*/    E           VALUE;/'
+tryCase "E 1e400 (beyond a double)" "ill defined primitiveEntry starting at keyword 'E'.*|beyond the range of a double" \
+    "sed -i '${E/VALUE/1e400}' $material"
+tryCase "E nan" "Entry 'E' in .*solidProperties.*not a finite number" \
+    "sed -i '${E/VALUE/nan}' $material"
+tryCase "E -inf" "Entry 'E' in .*solidProperties.*not a finite number" \
+    "sed -i '${E/VALUE/-inf}' $material"
+tryCase "E 1e300 (out of range)" "'E'.*out of range|'E'.*solidProperties" \
+    "sed -i '${E/VALUE/1e300}' $material"
+tryCase "a word for the material dictionary" "Entry 'material' in .*solidProperties.*must be a dictionary" \
+    "sed -i '/^material/,/^}/c\\material linearElastic;' $material"
+tryCase "a word for the summary dictionary" "Entry 'summary' in .*solidSolution.*must be a dictionary" \
+    "sed -i '/^summary/,/^}/c\\summary tipDisplacementY;' system/solidSolution"
+tryCase "a word for boundaryField" "Entry 'boundaryField' in .*0/solid/D.*must be a dictionary" \
+    "sed -i '/^boundaryField/,/^}/c\\boundaryField fixed;' 0/solid/D"
+tryCase "a word for a patch's condition" "Entry 'left' in .*0/solid/D.*line.*must be a dictionary" \
+    "sed -i 's/^    left .*/    left fixedDisplacement;/' 0/solid/D"
+
+# Duplicates, components of another analysis, ranges
+tryCase "E given twice" "Entry 'material/E' is given twice in .*solidProperties.*on line 2[0-9] and on line 2[0-9]" \
+    "sed -i 's/^    E .*/&\n    E           1000;/' $material"
+tryCase "endTime given twice" "Entry 'endTime' is given twice in .*controlDict" \
+    "sed -i 's/^endTime .*/&\nendTime 2;/' system/controlDict"
+tryCase "component z in plane strain (summary)" "Unknown component 'z' in .*solidSolution.*tipDisplacementY" \
+    "foamDictionary -entry summary/tipDisplacementY/component -set z system/solidSolution >/dev/null"
+tryCase "component z in plane strain (fixedDisplacement)" "Unknown component 'z' in .*0/solid/D.*left" \
+    "sed -i 's/^    left .*/    left { type fixedDisplacement; components (z); }/' 0/solid/D"
+tryCase "minDeltaT above deltaT" "Entry 'minDeltaT' in .*solidSolution.* is out of range: 5 > 1" \
+    "foamDictionary -entry minDeltaT -set 5 system/solidSolution >/dev/null"
+tryCase "forceTolerance 2" "Entry 'forceTolerance' in .*out of range" \
+    "foamDictionary -entry forceTolerance -set 2 system/solidSolution >/dev/null"
+
+# Case set-up
+tryCase "startTime with no time directory (fresh case)" "start time 0.5 .*has no time directory" \
+    "sed -i 's/^startTime .*/startTime 0.5;/' system/controlDict"
+tryCase "misspelt writeInterval" "Entry 'writeInterval' missing in .*controlDict.*'writeIntervl' meant to be 'writeInterval'" \
+    "sed -i 's/^writeInterval/writeIntervl/' system/controlDict"
+tryCase "unknown kind of region" "Unknown kind of region 'solidd' in constant/regionProperties; valid kinds: solid fluid" \
+    "sed -i 's/solid *(solid)/solidd (solid)/' constant/regionProperties"
+schedule="FoamFile { version 2.0; format ascii; class dictionary; object processSchedule; }"
+tryCase "empty process schedule" "No process steps in .*processSchedule" \
+    "echo '$schedule steps { }' > constant/processSchedule"
+tryCase "release of a patch with nothing constrained" "Entry 'release' in .*processSchedule.*patch 'top' has no constraint in component x" \
+    "foamDictionary -entry endTime -set 2 system/controlDict >/dev/null;
+     echo '$schedule steps { load { endTime 1; } spring { endTime 2; release (top); } }' > constant/processSchedule"
+tryCase "a process step naming an unknown patch (checked at start)" "Unknown patch 'lft' .*processSchedule" \
+    "foamDictionary -entry endTime -set 2 system/controlDict >/dev/null;
+     echo '$schedule steps { load { endTime 1; } spring { endTime 2; release (lft); } }' > constant/processSchedule"
+tryCase "no support (every patch free)" "Solid region 'solid' is not supported: the body can move as a rigid body: translations in x and y and rotation" \
+    "sed -i 's/^    left .*/    left { type free; }/' 0/solid/D"
+tryCase "support in x only" "can move as a rigid body: translation in y" \
+    "sed -i 's/^    left .*/    left { type fixedDisplacement; components (x); }/' 0/solid/D"
+# a path with spaces
+c="$(mktemp -d "${TMPDIR:-/tmp}/formFoam bad.XXXXXX")"
+cp -r "$base/." "$c/"
+(cd "$c" && timeout 60 formFoam > log.formFoam 2>&1)
+rc=$?
+expectFailure "a case path with a space" $rc "$c/log.formFoam" "contains a space: OpenFOAM case paths cannot contain spaces"
+noAbort "a case path with a space" $rc "$c/log.formFoam"
+rm -rf "$c"
+
+# Contact input (the flat punch of contact.sh)
 rm -rf "$base"
+base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
+cp -r "$formFoamTop/tests/cases/flatPunch/." "$base/"
+(cd "$base" && blockMesh -region block > log.blockMesh 2>&1) || fail "blockMesh of flatPunch"
+contact=constant/contactProperties
+tryCase "contact: epsilonN -1" "Entry 'epsilonN' in .*contactProperties.*out of range: -1" \
+    "foamDictionary -entry epsilonN -set -1 $contact >/dev/null"
+tryCase "contact: epsilonN 1e6" "Entry 'epsilonN' in .*contactProperties.*out of range: 1e\\+06.*spacing" \
+    "foamDictionary -entry epsilonN -set 1e6 $contact >/dev/null"
+tryCase "contact: a word for the tools dictionary" "Entry 'tools' in .*contactProperties.*must be a dictionary" \
+    "sed -i '/^tools/,/^}/c\\tools punch;' $contact"
+tryCase "contact: a pair on the empty front/back patch" "Patch 'frontAndBack' .*is an empty or wedge patch.*cannot carry contact" \
+    "sed -i 's/patch top; tool/patch frontAndBack; tool/' $contact"
+tryCase "contact: a tool profile in the reverse order" "Tool 'punch' .*turns its back on patch 'top'" \
+    "sed -i 's/profile     ((-1 15) (-1 5) (20 5) (20 15));/profile     ((20 15) (20 5) (-1 5) (-1 15));/' $contact"
+
+# Two bodies in one mesh that share no node, one of them free
+rm -rf "$base"
+base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
+cp -r "$formFoamTop/tests/cases/flatPunchDeformable/." "$base/"
+(cd "$base" && blockMesh -region block > log.blockMesh 2>&1) || fail "blockMesh of flatPunchDeformable"
+tryCase "two unconnected bodies, one free (no contact declared)" "is not supported: its piece [12] of 2 .*elements around.*pieces share no node.*translation in y" \
+    "rm constant/contactProperties; sed -i '/^    punchTop/,/^    }/c\\    punchTop { type free; }' 0/block/D"
+
+# Fluid: oil withdrawn beyond the cavity's volume (the piston, hydrostatic)
+rm -rf "$base"
+base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
+cp -r "$formFoamTop/tests/cases/piston/." "$base/"
+(cd "$base" && blockMesh -region plug > log.blockMesh 2>&1) || fail "blockMesh of piston"
+tryCase "fluid: more oil withdrawn than the cavity holds" "Entry 'injectedVolume' in .*constant/oil/fluidProperties.*withdraws all the fluid of cavity 'oil'" \
+    "sed -i 's/^fluidModel .*/fluidModel hydrostatic;/; s/^injectedVolume .*/injectedVolume table ((0 0) (1 -2));/' constant/oil/fluidProperties"
+rm -rf "$base"
+
+# The property over every case above
+if [ "$aborted" -eq 0 ] && [ "$tryCases" -gt 40 ]; then
+    pass "no bad input ended in an abort, a stack trace or a signal ($tryCases cases)"
+else
+    fail "bad inputs that aborted, traced or signalled: $aborted of $tryCases"
+fi
+
+#------------------------------------------------------------------------------
+# Valid input that must run: steps with nothing to do converge at once
+# (issue 18, section 1). The tip displacement must be the one of the plain
+# run to 1e-9, the extra steps need no Newton iteration.
+valid()
+{
+    local label=$1 tut=$2; shift 2
+    local c
+    c=$(mktemp -d "${TMPDIR:-/tmp}/formFoamValid.XXXXXX")
+    cp -r "$formFoamTop/tutorials/$tut/." "$c/"
+    (cd "$c" && ./Allclean > /dev/null 2>&1; blockMesh -region solid > log.blockMesh 2>&1
+     for e in "$@"; do eval "$e"; done
+     timeout 120 formFoam > log.formFoam 2>&1)
+    local rc=$?
+    if [ $rc -eq 0 ]; then
+        pass "$label: ran to the end"
+    else
+        fail "$label: exit $rc (see $c/log.formFoam)"
+        tail -5 "$c/log.formFoam" | sed 's/^/    | /'
+    fi
+    local n
+    n=$(grep -c 'equilibrium at the start state' "$c/log.formFoam")
+    checkBelow "$label: steps after the load converged with no iteration ($n)" "-$n" 0
+    tip=$(awk '$1 == "tipDisplacementY" { sub(/;$/, "", $2); print $2 }' "$c/postProcessing/summary")
+    echo "$tip"  > "$c/tip"
+    validCase=$c
+}
+plain=$(mktemp -d "${TMPDIR:-/tmp}/formFoamValid.XXXXXX")
+cp -r "$formFoamTop/tutorials/cooksMembrane/." "$plain/"
+(cd "$plain" && ./Allclean > /dev/null 2>&1; blockMesh -region solid > log.blockMesh 2>&1; formFoam > log.formFoam 2>&1)
+tip0=$(awk '$1 == "tipDisplacementY" { sub(/;$/, "", $2); print $2 }' "$plain/postProcessing/summary")
+valid "Cook's linear, endTime 3 past the load" cooksMembrane \
+    "foamDictionary -entry endTime -set 3 system/controlDict > /dev/null"
+checkClose "Cook's linear, endTime 3: tip displacement as the one-step run" "$(cat "$validCase/tip")" "$tip0" 1e-9
+rm -rf "$validCase"
+valid "Cook's linear, a dwell step holding the left patch" cooksMembrane \
+    "foamDictionary -entry endTime -set 2 system/controlDict > /dev/null" \
+    "echo '$schedule steps { load { endTime 1; deltaT 1; } dwell { endTime 2; deltaT 1; hold (left); } }' > constant/processSchedule"
+checkClose "Cook's linear, dwell: tip displacement as the one-step run" "$(cat "$validCase/tip")" "$tip0" 1e-9
+rm -rf "$validCase" "$plain"
+plain=$(mktemp -d "${TMPDIR:-/tmp}/formFoamValid.XXXXXX")
+cp -r "$formFoamTop/tutorials/cooksMembrane/neoHookean/." "$plain/"
+(cd "$plain" && ./Allclean > /dev/null 2>&1; blockMesh -region solid > log.blockMesh 2>&1; formFoam > log.formFoam 2>&1)
+tip0=$(awk '$1 == "tipDisplacementY" { sub(/;$/, "", $2); print $2 }' "$plain/postProcessing/summary")
+valid "Cook's neo-Hookean, endTime 1.2 past the load" cooksMembrane/neoHookean \
+    "foamDictionary -entry endTime -set 1.2 system/controlDict > /dev/null"
+checkClose "Cook's neo-Hookean, endTime 1.2: tip displacement as the plain run" "$(cat "$validCase/tip")" "$tip0" 1e-9
+rm -rf "$validCase" "$plain"

@@ -212,6 +212,18 @@ void Foam::formScene::readRunState()
             IOobject::MUST_READ, IOobject::NO_WRITE, false
         )
     );
+    // The exact time of the state: the directory's name holds it only to
+    // timePrecision digits
+    const scalar t = d.get<scalar>("time");
+    if (mag(t - steps_.startTime) > 1e-6*max(mag(t), 1.0))
+    {
+        FatalIOErrorInFunction(d)
+            << "The run state " << d.objectPath() << " is of time " << t
+            << ", not of its directory's time " << runTime_.timeName()
+            << " (was the directory renamed?)" << exit(FatalIOError);
+    }
+    steps_.startTime = t;
+    runTime_.setTime(t, runTime_.timeIndex());
     totals_.steps = d.get<label>("steps");
     totals_.iterations = d.get<label>("newtonIterations");
     totals_.cutbacks = d.get<label>("cutbacks");
