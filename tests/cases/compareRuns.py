@@ -10,8 +10,16 @@ magnitude of that column in the reference (so that values crossing zero are
 compared at the column's level). A missing file, a different header or row
 count prints "missing <what>" and exits 1: the caller's check then fails.
 """
+import math
 import re
 import sys
+
+
+def differs(x, y, scale):
+    """Relative difference; nan equals only nan (an entry not yet set)."""
+    if math.isnan(x) or math.isnan(y):
+        return 0.0 if math.isnan(x) and math.isnan(y) else math.inf
+    return abs(x - y) / max(abs(y), scale, 1e-300)
 
 
 def history(case):
@@ -47,14 +55,16 @@ def main():
         print("missing same summary entries")
         return 1
     worst, n = 0.0, 0
-    scale = [max(abs(r[k]) for r in rows0) for k in range(len(h0) - 1)]
+    scale = [max((abs(r[k]) for r in rows0 if not math.isnan(r[k])),
+                 default=0.0) for k in range(len(rows0[0]) if rows0 else 0)]
     for a, b in zip(rows1, rows0):
+        if len(a) != len(b):
+            print("missing same row length at time", b[0])
+            return 1
         for k, (x, y) in enumerate(zip(a, b)):
-            d = abs(x - y) / max(abs(y), scale[k], 1e-300)
-            worst, n = max(worst, d), n + 1
+            worst, n = max(worst, differs(x, y, scale[k])), n + 1
     for k, y in s0.items():
-        d = abs(s1[k] - y) / max(abs(y), 1e-300) if y != 0 else abs(s1[k])
-        worst, n = max(worst, d), n + 1
+        worst, n = max(worst, differs(s1[k], y, 0.0 if y else 1.0)), n + 1
     print("%.3g %d" % (worst, n))
     return 0
 

@@ -16,7 +16,7 @@
 #            new one not yet in place (only when a time is rewritten)
 #   written  after the rename
 # After each kill, startFrom latestTime must reproduce the uninterrupted
-# run: every history.dat line and summary value (totals of steps, Newton
+# run (also for the hydrostatic bulge, 1b): every history.dat line and summary value (totals of steps, Newton
 # iterations and cutbacks included; wall times excepted) to 1e-10
 # (compareRuns.py), and the VTK series must hold the same frames.
 . "$(dirname "$0")/testFunctions"
@@ -95,6 +95,34 @@ for fault in region:10 rename:20 written:30 region:45; do
         fail "kill at $fault: VTK frames $(frames "$c") vs $(frames "$ref")"
     fi
 done
+
+# 1b. The hydrostatic bulge (tutorials/hydraulicBulge: plasticity, contact
+#     with the die, the oil cavity, quadratic predictor, step growth; 10
+#     writes): killed after its 5th write, restarted from the latest time
+bulge()
+{
+    rm -rf "$1"; mkdir -p "$1"
+    cp -r "$formFoamTop/tutorials/hydraulicBulge/." "$1/"
+    (cd "$1" && ./Allclean > /dev/null 2>&1; blockMesh -region blank > log.blockMesh 2>&1)
+}
+bref=$work/bulge
+bulge "$bref"
+(cd "$bref" && timeout 600 formFoam > log.formFoam 2>&1) \
+    || fail "bulge: the uninterrupted run (see $bref/log.formFoam)"
+c=$work/bulgeKilled
+bulge "$c"
+(cd "$c" && FORMFOAM_FAULT=written:5 timeout 600 formFoam > log.formFoam 2>&1) 2>/dev/null
+rc=$?
+[ $rc -eq 137 ] && pass "bulge: killed after its 5th write" \
+    || fail "bulge: kill after the 5th write (exit $rc)"
+if latest "$c"; then
+    pass "bulge: restart from the latest time ran"
+else
+    fail "bulge: restart (see $c/log.restart)"
+fi
+read -r diff n < <(python3 "$here/compareRuns.py" "$bref" "$c")
+checkBelow "bulge: history and summary vs the uninterrupted run ($n values)" "$diff" 1e-10
+rm -rf "$bref" "$c"
 
 # 2. Killed while rewriting a time (restart from t = 1.5 over the written
 #    1.525, 1.55, ...): the earlier version of the time is put back

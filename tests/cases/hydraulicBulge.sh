@@ -241,6 +241,9 @@ tryCase "fluid: no interface with a solid" \
 tryCase "fluid: interface patch unknown" \
     "Entry 'interface' in .*fluidProperties.*'botom' is not a patch of solid region 'blank'" \
     "sed -i 's/^interface .*/interface (botom);/' $fp"
+tryCase "fluid: interface on the wedge (front/back) patch" \
+    "Entry 'interface' in .*fluidProperties.*'front' is an empty or wedge patch of solid region 'blank'" \
+    "sed -i 's/^interface .*/interface (front);/' $fp"
 tryCase "fluid: non-positive bulk modulus" \
     "Entry 'bulkModulus' in .*fluidProperties.*positive" \
     "sed -i 's/^bulkModulus .*/bulkModulus -1500;/' $fp"

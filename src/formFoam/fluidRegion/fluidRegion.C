@@ -12,6 +12,7 @@ Description
 #include "OSspecific.H"
 #include "pointIOField.H"
 #include "wedgePolyPatch.H"
+#include "emptyPolyPatch.H"
 #include "fluidSolidInterface.H"
 #include <limits>
 #include <sstream>
@@ -160,23 +161,8 @@ Foam::fluidRegion::fluidRegion
             << " region '" << name_ << "' has no interface with a solid"
             << exit(FatalIOError);
     }
-    const auto& faceSets = solid_->feMesh().feMesh().faceSets;
-    for (const word& p : patches)
-    {
-        if
-        (
-            !faceSets.count(p) || faceSets.at(p).empty()
-         || solid_->mesh().boundaryMesh().findPatchID(p) < 0
-        )
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Entry 'interface' in " << file << ": '" << p
-                << "' is not a patch of solid region '" << solid_->name()
-                << "'" << nl << "    Patches: "
-                << solid_->mesh().boundaryMesh().names() << exit(FatalIOError);
-        }
-        spec.faceSets.push_back(p);
-    }
+    checkInterface(patches, file);
+    for (const word& p : patches) spec.faceSets.push_back(p);
     if (solid_->analysis() == form::analysisType::solid3D)
     {
         FatalIOErrorInFunction(dict_)
@@ -240,6 +226,43 @@ Foam::fluidRegion::fluidRegion
 
 
 // * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
+
+void Foam::fluidRegion::checkInterface
+(
+    const wordList& patches,
+    const fileName& file
+) const
+{
+    const auto& faceSets = solid_->feMesh().feMesh().faceSets;
+    const polyBoundaryMesh& bm = solid_->mesh().boundaryMesh();
+    for (const word& p : patches)
+    {
+        const label patchi = bm.findPatchID(p);
+        if
+        (
+            patchi >= 0
+         && (isA<emptyPolyPatch>(bm[patchi]) || isA<wedgePolyPatch>(bm[patchi]))
+        )
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'interface' in " << file.c_str() << ": '" << p
+                << "' is an empty or wedge patch of solid region '"
+                << solid_->name() << "' (the front and back of the 2D mesh):"
+                << " it has no edges in the plane and cannot carry an"
+                << " interface. Use a patch on the outline of the region"
+                << exit(FatalIOError);
+        }
+        if (patchi < 0 || !faceSets.count(p) || faceSets.at(p).empty())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'interface' in " << file.c_str() << ": '" << p
+                << "' is not a patch of solid region '" << solid_->name()
+                << "'" << nl << "    Patches: " << bm.names()
+                << exit(FatalIOError);
+        }
+    }
+}
+
 
 void Foam::fluidRegion::buildALE
 (
@@ -348,6 +371,14 @@ void Foam::fluidRegion::buildALE
         }
         set.maxNonOrthogonality =
             md.getOrDefault<scalar>("maxNonOrthogonality", 80);
+        if (!(set.maxNonOrthogonality > 0 && set.maxNonOrthogonality < 90))
+        {
+            FatalIOErrorInFunction(md)
+                << "Entry 'meshMotion/maxNonOrthogonality' in "
+                << file.c_str() << " is out of range: "
+                << set.maxNonOrthogonality << " (valid: an angle in degrees"
+                << " in (0, 90))" << exit(FatalIOError);
+        }
         if (set.meshMotion == "oscillating")
         {
             set.amplitude = md.get<vector>("amplitude");
@@ -450,9 +481,26 @@ void Foam::fluidRegion::buildALE
                 << why.c_str() << exit(FatalIOError);
         }
     }
+    if (solid_) checkInterface(dict_.get<wordList>("interface"), file);
     for (const word& n : set.interfacePatches)
     {
-        if (mesh_->boundaryMesh().findPatchID(n) < 0)
+        const label patchi = mesh_->boundaryMesh().findPatchID(n);
+        if
+        (
+            patchi >= 0
+         && (
+                isA<emptyPolyPatch>(mesh_->boundaryMesh()[patchi])
+             || isA<wedgePolyPatch>(mesh_->boundaryMesh()[patchi])
+            )
+        )
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'fluidInterface' in " << file.c_str() << ": '" << n
+                << "' is an empty or wedge patch of fluid region '" << name_
+                << "' (the front and back of the 2D mesh): it cannot carry"
+                << " an interface" << exit(FatalIOError);
+        }
+        if (patchi < 0)
         {
             FatalIOErrorInFunction(dict_)
                 << "Entry 'fluidInterface' in " << file.c_str() << ": '" << n

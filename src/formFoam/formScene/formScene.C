@@ -804,7 +804,18 @@ void Foam::formScene::readSummary()
         }
         se.scale = ed.getOrDefault<scalar>("scale", 1);
         se.atTime = ed.found("time");
-        if (se.atTime) se.time = ed.get<scalar>("time");
+        if (se.atTime)
+        {
+            se.time = ed.get<scalar>("time");
+            if (!(se.time >= 0 && se.time <= steps_.endTime))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'time' of summary entry '" << se.name << "' in "
+                    << ed.name() << " is out of range: " << se.time
+                    << " (valid: a time of the run, 0 to endTime "
+                    << steps_.endTime << ")" << exit(FatalIOError);
+            }
+        }
         if (ed.found("at"))
         {
             // at (entry value): the value where an entry listed before

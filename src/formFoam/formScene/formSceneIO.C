@@ -499,9 +499,16 @@ bool Foam::formScene::replayHistory(scalar restartTime)
     const scalar tol = 1e-9*max(mag(restartTime), 1.0);
     for (std::string line; std::getline(is, line);)
     {
+        // strtod, not >>: an entry not yet evaluated is recorded as nan
         std::istringstream ls(line);
         std::vector<scalar> v;
-        for (scalar x; ls >> x;) v.push_back(x);
+        for (std::string w; ls >> w;)
+        {
+            char* end = nullptr;
+            const scalar x = std::strtod(w.c_str(), &end);
+            if (end == w.c_str() || *end != '\0') break;
+            v.push_back(x);
+        }
         if (v.size() != names.size() || v[0] >= restartTime - tol) continue;
         forAll(summary_, k)
         {
