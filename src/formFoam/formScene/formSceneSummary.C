@@ -1,0 +1,664 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+    formScene: the summary (formScene.H, "summary"): its entries read and
+    checked, evaluated per converged step, recorded in
+    postProcessing/history.dat (replayed on a restart) and written to
+    postProcessing/summary
+\*---------------------------------------------------------------------------*/
+#include "formScene.H"
+#include "dictionaryChecks.H"
+#include "formError.H"
+#include "mathematicalConstants.H"
+#include "OSspecific.H"
+#include "springbackMeasure.H"
+#include "vtkWriter.H"
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::formScene::readSummary()
+{
+    if (!solution_.found("summary")) return;
+    const dictionary& sd =
+        subDictOf(solution_, "summary", "{ <name> { type ...; } }");
+    for (const entry& e : sd)
+    {
+        summaryEntry se;
+        se.name = e.keyword();
+        se.dict = dictOf(e, sd, "{ type ...; }");
+        const dictionary& ed = se.dict;
+        const word type = ed.get<word>("type");
+        const wordList common{"type", "scale", "statistic", "time", "at"};
+        wordList keys(common);
+        if (type == "displacement" || type == "position")
+        {
+            keys.append(wordList{"point", "component"});
+        }
+        else if (type == "reaction")
+        {
+            keys.append(wordList{"patch", "component"});
+        }
+        else if (type == "circleRadius")
+        {
+            keys.append(word("patches"));
+        }
+        else if (type == "rotation")
+        {
+            keys.append(wordList{"patch", "positive"});
+        }
+        else if (type == "bendingRadius")
+        {
+            keys.append(wordList{"patch", "length"});
+        }
+        else if
+        (
+            contact_ && (type == "toolForce" || type == "toolPosition")
+        )
+        {
+            keys.append(wordList{"tool", "component"});
+        }
+        else if (fluid_ && !fluid_->ALE() && type == "fluidPressure")
+        {
+            // The uniform cavity pressure: a point (for the ALE model of
+            // the same case) is accepted and not needed
+            keys.append(word("point"));
+        }
+        else if (fluid_ && fluid_->ALE() && type == "fluidPressure")
+        {
+            keys.append(word("point"));
+        }
+        else if (fluid_ && fluid_->ALE() && type == "fluidVelocity")
+        {
+            keys.append(wordList{"point", "component"});
+        }
+        else if (fluid_ && fluid_->ALE() && type == "fluidFlowRate")
+        {
+            keys.append(word("patch"));
+            const word patch = ed.get<word>("patch");
+            if (!fluid_->hasPatch(patch))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'patch' in " << ed.name() << ": '" << patch
+                    << "' is not a patch of fluid region '" << fluid_->name()
+                    << "'" << exit(FatalIOError);
+            }
+        }
+        else if (fluid_ && fluid_->ALE() && type == "fluidForce")
+        {
+            keys.append(wordList{"patches", "component"});
+            for (const word& patch : ed.get<wordList>("patches"))
+            {
+                if (!fluid_->hasPatch(patch))
+                {
+                    FatalIOErrorInFunction(ed)
+                        << "Entry 'patches' in " << ed.name() << ": '"
+                        << patch << "' is not a patch of fluid region '"
+                        << fluid_->name() << "'" << exit(FatalIOError);
+                }
+            }
+            vectorComponent(ed.get<word>("component"), ed);
+        }
+        else if (fluid_ && type == "fluidVolume")
+        {}
+        else if (fluid_ && type == "injectedVolume")
+        {}
+        else if (type == "extent")
+        {
+            keys.append(wordList{"patch", "component", "extreme"});
+            const word x = ed.getOrDefault<word>("extreme", "max");
+            if (!wordList{"max", "min"}.found(x))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'extreme' in " << ed.name() << ": unknown '"
+                    << x << "'; valid: max min" << exit(FatalIOError);
+            }
+        }
+        else if (type == "difference")
+        {
+            keys.append(word("of"));
+            const wordList of = ed.get<wordList>("of");
+            for (const word& n : of)
+            {
+                const bool earlier = std::any_of
+                (
+                    summary_.begin(), summary_.end(),
+                    [&](const summaryEntry& o) { return o.name == n; }
+                );
+                if (!earlier || of.size() != 2)
+                {
+                    FatalIOErrorInFunction(ed)
+                        << "Entry 'of' in " << ed.name() << ": needs two"
+                        << " summary entries listed before '" << e.keyword()
+                        << "' (got " << of << ")" << exit(FatalIOError);
+                }
+            }
+        }
+        else if (type == "uChannelSpringback")
+        {
+            keys.append(wordList{"patch", "quantity"});
+            const word q = ed.get<word>("quantity");
+            if (!wordList{"theta1", "theta2", "rho"}.found(q))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'quantity' in " << ed.name() << ": unknown '"
+                    << q << "'; valid: theta1 theta2 rho"
+                    << exit(FatalIOError);
+            }
+        }
+        else
+        {
+            FatalIOErrorInFunction(ed)
+                << "Unknown summary type '" << type << "' in " << ed.name()
+                << nl << "    Valid types: displacement position reaction"
+                << " circleRadius rotation bendingRadius extent difference"
+                << " uChannelSpringback"
+                << (contact_ ? " toolForce toolPosition" : "")
+                << (
+                       !fluid_ ? ""
+                     : fluid_->ALE()
+                     ? " fluidPressure fluidVelocity fluidFlowRate fluidForce"
+                       " fluidVolume injectedVolume"
+                     : " fluidPressure fluidVolume injectedVolume"
+                   )
+                << exit(FatalIOError);
+        }
+        checkKeywords(ed, keys);
+        se.statistic = ed.getOrDefault<word>("statistic", "final");
+        if (!wordList{"final", "max", "min"}.found(se.statistic))
+        {
+            FatalIOErrorInFunction(ed)
+                << "Entry 'statistic' in " << ed.name() << ": unknown '"
+                << se.statistic << "'; valid: final max min"
+                << exit(FatalIOError);
+        }
+        se.scale = ed.getOrDefault<scalar>("scale", 1);
+        se.atTime = ed.found("time");
+        if (se.atTime)
+        {
+            se.time = ed.get<scalar>("time");
+            if (!(se.time >= 0 && se.time <= steps_.endTime))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'time' of summary entry '" << se.name << "' in "
+                    << ed.name() << " is out of range: " << se.time
+                    << " (valid: a time of the run, 0 to endTime "
+                    << steps_.endTime << ")" << exit(FatalIOError);
+            }
+        }
+        if (ed.found("at"))
+        {
+            // at (entry value): the value where an entry listed before
+            // this one first reaches value
+            ITstream& is = ed.lookup("at");
+            const Tuple2<word, scalar> at(is);
+            forAll(summary_, k)
+            {
+                if (summary_[k].name == at.first()) se.atEntry = k;
+            }
+            if (se.atEntry < 0 || se.atTime || se.statistic != "final")
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'at' in " << ed.name() << ": needs a summary"
+                    << " entry listed before '" << e.keyword() << "' and a"
+                    << " value, e.g. at (poleHeight 30); (got " << at.first()
+                    << "), and neither 'time' nor a statistic"
+                    << exit(FatalIOError);
+            }
+            se.atValue = at.second();
+        }
+        const wordList solidTypes
+        {
+            "displacement", "position", "reaction", "circleRadius",
+            "rotation", "bendingRadius", "extent", "uChannelSpringback"
+        };
+        if (solids_.empty() && solidTypes.found(type))
+        {
+            FatalIOErrorInFunction(ed)
+                << "summary entry '" << se.name << "' in " << ed.name()
+                << ": type '" << type << "' needs a solid region, and the"
+                << " scene has none" << exit(FatalIOError);
+        }
+        summary_.push_back(se);
+        // Validate points and patches now, not at the end of the run (a
+        // springback measure needs a formed channel: patch only)
+        if (type == "uChannelSpringback")
+        {
+            solids_[0].patchPoints(ed.get<word>("patch"), ed, false);
+        }
+        else
+        {
+            evaluate(summary_.back());
+        }
+    }
+}
+
+
+Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
+{
+    const dictionary& ed = e.dict;
+    const word type = ed.get<word>("type");
+    scalar value = 0;
+    if (type.starts_with("fluid") || type == "injectedVolume")
+    {
+        return e.scale*evaluateFluid(ed, type);
+    }
+    if (type == "difference")
+    {
+        // The reported values (after their statistic or time) of two
+        // entries listed before this one
+        const wordList of = ed.get<wordList>("of");
+        scalar v[2] = {0, 0};
+        for (label i = 0; i < 2; ++i)
+        {
+            for (const summaryEntry& o : summary_)
+            {
+                if (o.name == of[i])
+                {
+                    v[i] = o.set ? o.value : NAN;
+                }
+            }
+        }
+        return e.scale*(v[0] - v[1]);
+    }
+    if (type == "toolForce" || type == "toolPosition")
+    {
+        const label comp = planeComponent(ed.get<word>("component"), ed, solids_[0].analysis());
+        const word tool = ed.get<word>("tool");
+        return e.scale*
+        (
+            type == "toolForce"
+          ? contact_->toolForce(tool, comp, ed)
+          : contact_->toolPosition(tool, comp, summaryTime_, ed)
+        );
+    }
+    const solidRegion& s = solids_[0];
+    if (type == "circleRadius")
+    {
+        const wordList patches = ed.get<wordList>("patches");
+        for (const word& p : patches) value += s.circleRadius(p, ed);
+        value /= max(label(1), patches.size());
+    }
+    else if (type == "rotation")
+    {
+        value = s.patchRotation(ed.get<word>("patch"), ed);
+        // positive: in [0, 2 pi) instead of (-pi, pi] (a hem turns its
+        // flange by about pi)
+        if (ed.getOrDefault<bool>("positive", false) && value < 0)
+        {
+            value += constant::mathematical::twoPi;
+        }
+    }
+    else if (type == "extent")
+    {
+        // Largest (smallest) current coordinate of a patch's nodes
+        const Eigen::MatrixXd P =
+            s.patchPoints(ed.get<word>("patch"), ed, true);
+        const Eigen::VectorXd c =
+            P.col(planeComponent(ed.get<word>("component"), ed, solids_[0].analysis()));
+        value =
+            ed.getOrDefault<word>("extreme", "max") == "max"
+          ? c.maxCoeff() : c.minCoeff();
+    }
+    else if (type == "bendingRadius")
+    {
+        const scalar theta = s.patchRotation(ed.get<word>("patch"), ed);
+        value = mag(theta) > VSMALL ? ed.get<scalar>("length")/mag(theta) : GREAT;
+    }
+    else if (type == "uChannelSpringback")
+    {
+        // NUMISHEET'93 measures of the patch's current node line, ordered
+        // by the reference position along the strip (from the symmetry
+        // plane); a profile that is not (yet) a channel gives NaN
+        const word patch = ed.get<word>("patch");
+        const Eigen::MatrixXd X = s.patchPoints(patch, ed, false);
+        const Eigen::MatrixXd x = s.patchPoints(patch, ed, true);
+        std::vector<label> order(X.rows());
+        std::iota(order.begin(), order.end(), 0);
+        std::sort
+        (
+            order.begin(), order.end(),
+            [&](label a, label b) { return X(a, 0) < X(b, 0); }
+        );
+        std::vector<Eigen::Vector2d> profile;
+        for (const label i : order) profile.emplace_back(x(i, 0), x(i, 1));
+        try
+        {
+            const form::uChannelSpringback m = form::measureUChannel(profile);
+            const word q = ed.get<word>("quantity");
+            value = q == "theta1" ? m.theta1 : q == "theta2" ? m.theta2 : m.rho;
+        }
+        catch (const form::numericalError&)
+        {
+            value = std::numeric_limits<scalar>::quiet_NaN();
+        }
+    }
+    else
+    {
+        const label comp = planeComponent(ed.get<word>("component"), ed, solids_[0].analysis());
+        if (type == "displacement")
+        {
+            value = s.displacementAt(ed.get<point>("point"), comp, ed);
+        }
+        else if (type == "position")
+        {
+            const point p = ed.get<point>("point");
+            const Eigen::Vector2d X = s.feMesh().toPlane(p);
+            value = X(comp) + s.displacementAt(p, comp, ed);
+        }
+        else
+        {
+            value = s.reaction(ed.get<word>("patch"), comp, ed);
+        }
+    }
+    return e.scale*value;
+}
+
+
+Foam::scalar Foam::formScene::evaluateFluid
+(
+    const dictionary& ed,
+    const word& type
+) const
+{
+    if (type == "fluidVolume") return fluid_->volume();
+    if (type == "injectedVolume") return fluid_->injectedVolume(summaryTime_);
+    if (type == "fluidFlowRate") return fluid_->flowRate(ed.get<word>("patch"));
+    if (type == "fluidForce")
+    {
+        const direction d = vectorComponent(ed.get<word>("component"), ed);
+        scalar F = 0;
+        for (const word& patch : ed.get<wordList>("patches"))
+        {
+            F += fluid_->force(patch)[d];
+        }
+        return F;
+    }
+    // Without a point: the cavity pressure, or the ALE fluid's mean
+    // pressure on its interface with the solid
+    if (type == "fluidPressure" && !ed.found("point"))
+    {
+        return fluid_->pressure();
+    }
+    if (type == "fluidPressure" && !fluid_->ALE()) return fluid_->pressure();
+    // A point of the fluid mesh
+    const point pt = ed.get<point>("point");
+    const scalar v =
+        type == "fluidPressure"
+      ? fluid_->pressureAt(pt)
+      : fluid_->velocityAt(pt, vectorComponent(ed.get<word>("component"), ed));
+    if (std::isnan(v))
+    {
+        FatalIOErrorInFunction(ed)
+            << "Entry 'point' in " << ed.name() << ": " << pt << " is not"
+            << " inside the mesh of fluid region '" << fluid_->name() << "'"
+            << exit(FatalIOError);
+    }
+    return v;
+}
+
+
+void Foam::formScene::updateEntry
+(
+    summaryEntry& e,
+    scalar time,
+    scalar v,
+    bool first
+)
+{
+    const scalar tPrev = e.curTime, vPrev = e.curValue;
+    e.prevTime = tPrev;
+    e.prevValue = vPrev;
+    e.curTime = time;
+    e.curValue = v;
+    if (e.atEntry >= 0)
+    {
+        // The value where entry atEntry (updated before this one in the
+        // same record) first reaches atValue: linear interpolation
+        // between the two records that bracket it
+        if (e.set) return;
+        const summaryEntry& a = summary_[e.atEntry];
+        const scalar target = e.atValue;
+        if (a.curValue == target)
+        {
+            e.value = v;
+            e.set = true;
+        }
+        else if
+        (
+            !first && a.prevValue != target
+         && (a.prevValue - target)*(a.curValue - target) < 0
+        )
+        {
+            const scalar w = (target - a.prevValue)/(a.curValue - a.prevValue);
+            e.value = vPrev + w*(v - vPrev);
+            e.set = true;
+        }
+        return;
+    }
+    if (e.atTime)
+    {
+        // Value at e.time: linear interpolation between the converged
+        // steps that bracket it (exact when a step ends on it)
+        const scalar tol = 1e-9*max(mag(e.time), 1.0);
+        if (mag(time - e.time) <= tol)
+        {
+            e.value = v;
+            e.set = true;
+        }
+        else if (!first && tPrev < e.time && e.time < time)
+        {
+            const scalar w = (e.time - tPrev)/(time - tPrev);
+            e.value = vPrev + w*(v - vPrev);
+            e.set = true;
+        }
+        return;
+    }
+    if
+    (
+        !e.set || e.statistic == "final"
+     || (e.statistic == "max" && v > e.value)
+     || (e.statistic == "min" && v < e.value)
+    )
+    {
+        e.value = v;
+    }
+    e.set = true;
+}
+
+
+void Foam::formScene::recordSummary(scalar time, bool first)
+{
+    summaryTime_ = time;
+    const fileName dir = runTime_.path()/"postProcessing";
+    mkDir(dir);
+    const bool append = !first && isFile(dir/"history.dat");
+    std::ofstream os
+    (
+        dir/"history.dat", append ? std::ios::app : std::ios::trunc
+    );
+    os.precision(15);
+    if (!append)
+    {
+        os << "# time";
+        for (const summaryEntry& e : summary_) os << ' ' << e.name;
+        os << '\n';
+    }
+    os << time;
+    for (summaryEntry& e : summary_)
+    {
+        const scalar v = evaluate(e);
+        os << ' ' << v;
+        updateEntry(e, time, v, first);
+    }
+    os << '\n';
+    os.flush();
+    if (!os)
+    {
+        FatalErrorInFunction
+            << "Cannot append to " << dir/"history.dat" << " (disk full?)"
+            << exit(FatalError);
+    }
+}
+
+
+bool Foam::formScene::replayHistory(scalar restartTime)
+{
+    const fileName file = runTime_.path()/"postProcessing"/"history.dat";
+    if (!isFile(file)) return false;
+    std::ifstream is(file);
+    std::string header;
+    if (!std::getline(is, header) || header.rfind("# time", 0) != 0)
+    {
+        return false;
+    }
+    // Columns by name; entries without a column start afresh
+    std::istringstream hs(header.substr(1));
+    std::vector<std::string> names;
+    for (std::string w; hs >> w;) names.push_back(w);
+    std::vector<label> column(summary_.size(), -1);
+    forAll(summary_, k)
+    {
+        const auto it =
+            std::find(names.begin(), names.end(), summary_[k].name);
+        if (it != names.end()) column[k] = label(it - names.begin());
+    }
+    // The rows before the restart time (later ones belong to the
+    // abandoned continuation and are dropped)
+    std::vector<std::string> kept;
+    bool first = true;
+    const scalar tol = 1e-9*max(mag(restartTime), 1.0);
+    for (std::string line; std::getline(is, line);)
+    {
+        // strtod, not >>: an entry not yet evaluated is recorded as nan
+        std::istringstream ls(line);
+        std::vector<scalar> v;
+        for (std::string w; ls >> w;)
+        {
+            char* end = nullptr;
+            const scalar x = std::strtod(w.c_str(), &end);
+            if (end == w.c_str() || *end != '\0') break;
+            v.push_back(x);
+        }
+        if (v.size() != names.size() || v[0] >= restartTime - tol) continue;
+        forAll(summary_, k)
+        {
+            if (column[k] > 0) updateEntry(summary_[k], v[0], v[column[k]], first);
+        }
+        first = false;
+        kept.push_back(line);
+    }
+    is.close();
+    // Rewritten under a temporary name and renamed: a kill leaves either
+    // the old or the new history
+    std::ostringstream os;
+    os << header << '\n';
+    for (const std::string& line : kept) os << line << '\n';
+    try
+    {
+        form::writeFileAtomic(file, os.str());
+    }
+    catch (const form::numericalError& err)
+    {
+        FatalErrorInFunction << err.what() << exit(FatalError);
+    }
+    return !kept.empty();
+}
+
+
+void Foam::formScene::writeSummary
+(
+    label newtonIterations,
+    label nSteps,
+    label cutbacks,
+    scalar wallTime
+) const
+{
+    const fileName dir = runTime_.path()/"postProcessing";
+    mkDir(dir);
+    const fileName tmp = dir/"summary.writing";
+    {
+        OFstream os(tmp);
+        os  << "FoamFile" << nl << "{" << nl
+            << "    version     2.0;" << nl
+            << "    format      ascii;" << nl
+            << "    class       dictionary;" << nl
+            << "    object      summary;" << nl
+            << "}" << nl << nl;
+        os.precision(15);
+
+        for (const summaryEntry& e : summary_)
+        {
+            if (!e.set && e.atEntry >= 0)
+            {
+                FatalIOErrorInFunction(e.dict)
+                    << "summary entry '" << e.name << "' in " << e.dict.name()
+                    << " was never evaluated: '" << summary_[e.atEntry].name
+                    << "' never reached " << e.atValue << " (it ended at "
+                    << summary_[e.atEntry].curValue << ")"
+                    << exit(FatalIOError);
+            }
+            if (!e.set)
+            {
+                FatalIOErrorInFunction(e.dict)
+                    << "summary entry '" << e.name << "' in " << e.dict.name()
+                    << " was never evaluated: no converged step ended at its"
+                    << " time " << e.time << exit(FatalIOError);
+            }
+            os.writeEntry(e.name, e.value);
+            Info<< "    " << e.name << " = " << e.value << nl;
+        }
+        const bool solid = solids_.size();
+        os.writeEntry
+        (
+            "elementType", solid ? solids_[0].elementType() : word("none")
+        );
+        os.writeEntry
+        (
+            "fluidModel", fluid_ ? fluid_->fluidModel() : word("none")
+        );
+        os.writeEntry
+        (
+            "nElements", solid ? solids_[0].feMesh().feMesh().nElements() : 0
+        );
+        os.writeEntry("nDofs", model().nFreeDofs());
+        if (fluid_ && fluid_->ALE())
+        {
+            os.writeEntry("nFluidUnknowns", model().nUnknowns() - model().nFreeDofs());
+        }
+        os.writeEntry("steps", nSteps);
+        os.writeEntry("newtonIterations", newtonIterations);
+        os.writeEntry
+        (
+            "newtonIterationsPerStep",
+            scalar(newtonIterations)/max(label(1), nSteps)
+        );
+        os.writeEntry("maxIterationsInAStep", maxStepIterations_);
+        os.writeEntry("cutbacks", cutbacks);
+        for (const auto& sw : stepWallTimes_)
+        {
+            os.writeEntry(word(sw.first + "WallTime"), sw.second);
+        }
+        os.writeEntry("wallTime", wallTime);
+        os.flush();
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "Cannot write " << tmp << " (disk full?)" << exit(FatalError);
+        }
+    }
+    if (!Foam::mv(tmp, dir/"summary"))
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << tmp << " to " << dir/"summary"
+            << exit(FatalError);
+    }
+}
+
+
+// ************************************************************************* //
