@@ -175,7 +175,9 @@ tryCase "meshes do not share the interface" \
     "sed -i 's/(0 1 0) (1 1 0) (1 2 0) (0 2 0)/(0 1.1 0) (1 1.1 0) (1 2 0) (0 2 0)/; s/(0 1 0.1) (1 1 0.1)/(0 1.1 0.1) (1 1.1 0.1)/' system/plug/blockMeshDict && blockMesh -region plug > /dev/null 2>&1"
 tryCase "plane fluid, axisymmetric solid" \
     "Fluid region 'oil' .* and solid region 'plug' .*analysisType.*: the solid is axisymmetric but the fluid mesh has no wedge patches" \
-    "sed -i 's/planeStrain/axisymmetric/' constant/plug/solidProperties"
+    "sed -i 's/planeStrain/axisymmetric/' constant/plug/solidProperties;
+     sed -i 's/components (x y)/components (r z)/; s/components *(x)/components (r)/' 0/plug/D;
+     sed -i 's/component *y;/component z;/' system/solidSolution"
 tryCase "pressure control with the ALE fluid" \
     "Entry 'pressure' in constant/oil/fluidProperties: pressure control is the hydrostatic model's" \
     "sed -i 's/^injectedVolume .*/pressure table ((0 0) (1 1));/; /^inlet /d' constant/oil/fluidProperties"

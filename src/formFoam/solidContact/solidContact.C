@@ -165,26 +165,31 @@ void Foam::solidContact::checkOrientation
                 it->second += n;
             }
         }
-        // A tool faces the patch when its outward normal at the closest
-        // point opposes the patch's normal; end points and sharp corners
-        // (whose normal points at any node) do not tell
-        label facing = 0, backing = 0;
+        // A reversed profile puts the body on the tool's inner side (gap
+        // <= 0: touching or inside) with the tool's outward normal along
+        // the patch's own (backing it). A node behind a tool at a positive
+        // gap is not wrong: a tool may reach a face only after the body
+        // has turned (a hemming flange). End points and sharp corners
+        // (whose normal points at any node) do not tell.
+        const scalar tol = 1e-9*tool->profile->length();
+        label considered = 0, reversed = 0;
         for (const auto& nn : normals)
         {
             const Eigen::Vector2d y = fe.X.row(nn.first).transpose() - d;
             const form::profileProjection p = tool->profile->project(y);
             if (p.vertex || nn.second.norm() == 0) continue;
+            ++considered;
             const scalar c = p.normal.dot(nn.second.normalized());
-            if (c < -0.1) ++facing;
-            if (c > 0.1) ++backing;
+            if (c > 0.1 && p.gap <= tol) ++reversed;
         }
-        if (backing > 0 && facing == 0)
+        if (considered > 0 && reversed == considered)
         {
             FatalIOErrorInFunction(dict_)
                 << "Tool '" << ps.tool.c_str() << "' in " << dict_.name()
                 << " turns its back on patch '" << ps.faceSet.c_str()
-                << "' of pair '" << ps.name.c_str() << "': at every node"
-                << " of the patch the tool's outward normal points the"
+                << "' of pair '" << ps.name.c_str() << "': every node of"
+                << " the patch lies on the tool's inner side (touching or"
+                << " inside it), where the tool's outward normal points the"
                 << " same way as the body's." << nl
                 << "    Rule: walking along the points of 'profile', the"
                 << " tool's solid lies on the LEFT (counter-clockwise"
