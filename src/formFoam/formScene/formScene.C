@@ -10,6 +10,8 @@
 #include "autoSolver.H"
 #include "springbackMeasure.H"
 #include "supportCheck.H"
+#include "vtkWriter.H"
+#include "formError.H"
 #include <algorithm>
 #include <fstream>
 #include <iostream>
@@ -245,22 +247,37 @@ void Foam::formScene::writeEnergy(scalar time)
                 }
             }
         }
-        energyFile_.reset(new OFstream(path));
+        // The kept rows (or the header) are written under a temporary
+        // name and renamed, then the file is appended to: a kill never
+        // leaves it truncated
+        std::ostringstream text;
         if (kept.empty())
         {
-            (*energyFile_)
-                << "# time kinetic internalWork externalWork dissipated"
-                << " contactWork frictionWork" << nl;
+            text<< "# time kinetic internalWork externalWork dissipated"
+                << " contactWork frictionWork\n";
         }
-        for (const std::string& line : kept)
+        for (const std::string& line : kept) text << line << '\n';
+        try
         {
-            (*energyFile_) << line.c_str() << nl;
+            form::writeFileAtomic(path, text.str());
         }
+        catch (const form::numericalError& err)
+        {
+            FatalErrorInFunction << err.what() << exit(FatalError);
+        }
+        energyFile_.reset(new std::ofstream(path, std::ios::app));
+        energyFile_->precision(15);
     }
-    (*energyFile_)
-        << time << ' ' << e.kinetic << ' ' << e.internalWork << ' '
+    std::ofstream& os = *energyFile_;
+    os  << time << ' ' << e.kinetic << ' ' << e.internalWork << ' '
         << e.externalWork << ' ' << e.dissipated() << ' ' << e.contactWork
-        << ' ' << e.frictionWork << endl;
+        << ' ' << e.frictionWork << std::endl;
+    if (!os)
+    {
+        FatalErrorInFunction
+            << "Cannot append to " << runTime_.path()/"postProcessing"
+            << "/energy.dat (disk full?)" << exit(FatalError);
+    }
 }
 
 
