@@ -91,6 +91,9 @@ tryCase "a word for boundaryField" "Entry 'boundaryField' in .*0/solid/D.*must b
 tryCase "a word for a patch's condition" "Entry 'left' in .*0/solid/D.*line.*must be a dictionary" \
     "sed -i 's/^    left .*/    left fixedDisplacement;/' 0/solid/D"
 
+tryCase "an initial displacement in internalField (ignored before)" "Entry 'internalField' in .*0/solid/D.*must be uniform \\(0 0 0\\)" \
+    "foamDictionary -entry internalField -set 'uniform (1 0 0)' 0/solid/D >/dev/null"
+
 # Duplicates, components of another analysis, ranges
 tryCase "E given twice" "Entry 'material/E' is given twice in .*solidProperties.*on line 2[0-9] and on line 2[0-9]" \
     "sed -i 's/^    E .*/&\n    E           1000;/' $material"

@@ -389,6 +389,33 @@ void Foam::solidRegion::readBoundaryConditions()
     IFstream is(path);
     const dictionary fieldDict(is);
     checkInput(fieldDict, path);
+    // The run starts from the undeformed state: an initial displacement in
+    // internalField would be ignored, so anything but zero is an error
+    if (fieldDict.found("internalField"))
+    {
+        const ITstream& is = fieldDict.lookup("internalField");
+        const std::string text = is.toString();
+        bool zero = false;
+        try
+        {
+            ITstream copy(is);
+            copy.rewind();
+            word kind;
+            copy >> kind;
+            vector v;
+            copy >> v;
+            zero = kind == "uniform" && mag(v) == 0 && copy.eof();
+        }
+        catch (const Foam::error&) {}
+        if (!zero)
+        {
+            FatalIOErrorInFunction(fieldDict)
+                << "Entry 'internalField' in " << path << ": '" << text.c_str()
+                << "'; formFoam starts from the undeformed state, so it must"
+                << " be uniform (0 0 0) (displacements are prescribed on"
+                << " patches in boundaryField)" << exit(FatalIOError);
+        }
+    }
     const dictionary& bf =
         subDictOf(fieldDict, "boundaryField", "{ <patch> { type ...; } }");
 
