@@ -137,11 +137,17 @@ expectFailure "a case path with a space" $rc "$c/log.formFoam" "contains a space
 noAbort "a case path with a space" $rc "$c/log.formFoam"
 rm -rf "$c"
 
+# newBase <case in tests/cases> <region>: the base of the next tryCases
+newBase()
+{
+    rm -rf "$base"
+    base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
+    cp -r "$formFoamTop/tests/cases/$1/." "$base/"
+    (cd "$base" && blockMesh -region "$2" > log.blockMesh 2>&1) || fail "blockMesh of $1"
+}
+
 # Contact input (the flat punch of contact.sh)
-rm -rf "$base"
-base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
-cp -r "$formFoamTop/tests/cases/flatPunch/." "$base/"
-(cd "$base" && blockMesh -region block > log.blockMesh 2>&1) || fail "blockMesh of flatPunch"
+newBase flatPunch block
 contact=constant/contactProperties
 tryCase "contact: epsilonN -1" "Entry 'epsilonN' in .*contactProperties.*out of range: -1" \
     "foamDictionary -entry epsilonN -set -1 $contact >/dev/null"
@@ -155,18 +161,12 @@ tryCase "contact: a tool profile in the reverse order" "Tool 'punch' .*turns its
     "sed -i 's/profile     ((-1 15) (-1 5) (20 5) (20 15));/profile     ((20 15) (20 5) (-1 5) (-1 15));/' $contact"
 
 # Two bodies in one mesh that share no node, one of them free
-rm -rf "$base"
-base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
-cp -r "$formFoamTop/tests/cases/flatPunchDeformable/." "$base/"
-(cd "$base" && blockMesh -region block > log.blockMesh 2>&1) || fail "blockMesh of flatPunchDeformable"
+newBase flatPunchDeformable block
 tryCase "two unconnected bodies, one free (no contact declared)" "is not supported: its piece [12] of 2 .*elements around.*pieces share no node.*translation in y" \
     "rm constant/contactProperties; sed -i '/^    punchTop/,/^    }/c\\    punchTop { type free; }' 0/block/D"
 
 # Fluid: oil withdrawn beyond the cavity's volume (the piston, hydrostatic)
-rm -rf "$base"
-base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
-cp -r "$formFoamTop/tests/cases/piston/." "$base/"
-(cd "$base" && blockMesh -region plug > log.blockMesh 2>&1) || fail "blockMesh of piston"
+newBase piston plug
 tryCase "fluid: more oil withdrawn than the cavity holds" "Entry 'injectedVolume' in .*constant/oil/fluidProperties.*withdraws all the fluid of cavity 'oil'" \
     "sed -i 's/^fluidModel .*/fluidModel hydrostatic;/; s/^injectedVolume .*/injectedVolume table ((0 0) (1 -2));/' constant/oil/fluidProperties"
 rm -rf "$base"
