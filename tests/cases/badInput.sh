@@ -113,6 +113,8 @@ tryCase "startTime with no time directory (fresh case)" "start time 0.5 .*has no
     "sed -i 's/^startTime .*/startTime 0.5;/' system/controlDict"
 tryCase "misspelt writeInterval" "Entry 'writeInterval' missing in .*controlDict.*'writeIntervl' meant to be 'writeInterval'" \
     "sed -i 's/^writeInterval/writeIntervl/' system/controlDict"
+tryCase "writeControl misspelt (Time took a default)" "Entry 'writeControl' in .*controlDict.*unknown 'timestep'" \
+    "sed -i 's/^writeControl .*/writeControl timestep;/' system/controlDict"
 tryCase "unknown kind of region" "Unknown kind of region 'solidd' in constant/regionProperties; valid kinds: solid fluid" \
     "sed -i 's/solid *(solid)/solidd (solid)/' constant/regionProperties"
 schedule="FoamFile { version 2.0; format ascii; class dictionary; object processSchedule; }"

@@ -131,6 +131,38 @@ void checkControlDict(const fileName& caseDir)
     {
         required.append("endTime");
     }
+    // Entries OpenFOAM's Time takes with a warning or silently when wrong
+    const auto oneOf = [&](const word& key, const wordList& valid)
+    {
+        if (!d.found(key)) return;
+        const word v = d.get<word>(key);
+        if (!valid.found(v))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry '" << key << "' in " << file << ": unknown '" << v
+                << "'; valid: " << valid << exit(FatalIOError);
+        }
+    };
+    oneOf("writeFormat", {"ascii", "binary"});
+    oneOf("timeFormat", {"general", "fixed", "scientific"});
+    oneOf("startFrom", {"firstTime", "startTime", "latestTime"});
+    oneOf("stopAt", {"endTime", "writeNow", "noWriteNow", "nextWrite"});
+    oneOf
+    (
+        "writeControl",
+        // (formFoam writes by step count or simulated time; clockTime and
+        // cpuTime are not implemented)
+        {"timeStep", "runTime", "adjustableRunTime", "adjustable"}
+    );
+    for (const word key : {"writePrecision", "timePrecision"})
+    {
+        if (d.found(key) && !(d.get<label>(key) > 0 && d.get<label>(key) <= 30))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry '" << key << "' in " << file << " is out of range:"
+                << " a number of digits from 1 to 30" << exit(FatalIOError);
+        }
+    }
     for (const word& key : required)
     {
         if (d.found(key)) continue;
