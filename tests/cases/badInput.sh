@@ -105,6 +105,8 @@ tryCase "component z in plane strain (fixedDisplacement)" "Unknown component 'z'
     "sed -i 's/^    left .*/    left { type fixedDisplacement; components (z); }/' 0/solid/D"
 tryCase "minDeltaT above deltaT" "Entry 'minDeltaT' in .*solidSolution.* is out of range: 5 > 1" \
     "foamDictionary -entry minDeltaT -set 5 system/solidSolution >/dev/null"
+tryCase "a summary time outside the run" "Entry 'time' of summary entry 'tipDisplacementY' in .*out of range: 5" \
+    "foamDictionary -entry summary/tipDisplacementY/time -set 5 system/solidSolution >/dev/null"
 tryCase "forceTolerance 2" "Entry 'forceTolerance' in .*out of range" \
     "foamDictionary -entry forceTolerance -set 2 system/solidSolution >/dev/null"
 

@@ -46,6 +46,16 @@ lastHistory()
 c=$(caseCopy hydraulicBulge)
 if (cd "$c" && OMP_NUM_THREADS=1 ./Allrun > log.Allrun 2>&1) \
    && [ -f "$c/postProcessing/summary" ]; then
+    # Everything the run made is output git ignores (or Allclean removes):
+    # run in the tree, it would leave no untracked file
+    untracked=0
+    while IFS= read -r f; do
+        rel=${f#"$c"/}
+        [ -e "$formFoamTop/tutorials/hydraulicBulge/$rel" ] && continue
+        git -C "$formFoamTop" check-ignore -q "tutorials/hydraulicBulge/$rel" \
+            || { untracked=$((untracked + 1)); echo "    not ignored: $rel"; }
+    done < <(find "$c" -type f)
+    checkBelow "bulge: files of the run that git would report as untracked" "$untracked" 1
     [ "$(summaryValue "$c" fluidModel)" = hydrostatic ] \
         && pass "bulge: summary fluidModel hydrostatic" \
         || fail "bulge: summary fluidModel is '$(summaryValue "$c" fluidModel)'"
