@@ -117,6 +117,8 @@ tryCase "misspelt writeInterval" "Entry 'writeInterval' missing in .*controlDict
     "sed -i 's/^writeInterval/writeIntervl/' system/controlDict"
 tryCase "writeControl misspelt (Time took a default)" "Entry 'writeControl' in .*controlDict.*unknown 'timestep'" \
     "sed -i 's/^writeControl .*/writeControl timestep;/' system/controlDict"
+tryCase "writeInterval -1 (the write loop never ended)" "Entry 'writeInterval' in .*controlDict.* must be positive" \
+    "sed -i 's/^writeControl .*/writeControl runTime;/; s/^writeInterval .*/writeInterval -1;/' system/controlDict"
 tryCase "unknown kind of region" "Unknown kind of region 'solidd' in constant/regionProperties; valid kinds: solid fluid" \
     "sed -i 's/solid *(solid)/solidd (solid)/' constant/regionProperties"
 schedule="FoamFile { version 2.0; format ascii; class dictionary; object processSchedule; }"

@@ -154,6 +154,13 @@ void checkControlDict(const fileName& caseDir)
         // cpuTime are not implemented)
         {"timeStep", "runTime", "adjustableRunTime", "adjustable"}
     );
+    if (d.found("writeInterval") && !(d.get<scalar>("writeInterval") > 0))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'writeInterval' in " << file << " must be positive"
+            << " (steps for writeControl timeStep, a time otherwise)"
+            << exit(FatalIOError);
+    }
     for (const word key : {"writePrecision", "timePrecision"})
     {
         if (d.found(key) && !(d.get<label>(key) > 0 && d.get<label>(key) <= 30))
