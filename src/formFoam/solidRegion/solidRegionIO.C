@@ -1,0 +1,320 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+    solidRegion: output and restart state (solidRegion.H): the fields and
+    restart state of a time (written into the temporary directory of
+    formScene::writeTime), the VTK series, and the state read on a restart
+\*---------------------------------------------------------------------------*/
+#include "solidRegion.H"
+#include "contactModel.H"
+#include "dictionaryChecks.H"
+#include "Function1.H"
+#include "IFstream.H"
+#include "IOField.H"
+#include "OSspecific.H"
+#include "pointFields.H"
+#include "pointLocator.H"
+#include "materialInput.H"
+#include "Tuple2.H"
+#include "volFields.H"
+#include "emptyFvPatch.H"
+#include "wedgeFvPatch.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+bool Foam::solidRegion::write()
+{
+    const word timeName = runTime_.timeName();
+    const form::feMesh& fe = feMesh_->feMesh();
+    const form::matX U = model_->displacement();
+    const std::vector<form::elementResult> results = model_->elementResults();
+
+    // (formScene::writeTime names the time with the temporary directory
+    // of the time being written)
+    const auto io = [&](const word& fieldName)
+    {
+        return IOobject
+        (
+            fieldName, timeName, *mesh_,
+            IOobject::NO_READ, IOobject::NO_WRITE, false
+        );
+    };
+
+    // Nodal displacement at the polyMesh points
+    pointVectorField pointD
+    (
+        io("pointD"),
+        pointMesh::New(*mesh_),
+        dimensionedVector(dimLength, Zero)
+    );
+    const pointField& pts = mesh_->points();
+    forAll(pts, pointi)
+    {
+        const label n = feMesh_->pointToNode()[pointi];
+        if (n >= 0)
+        {
+            pointD[pointi] =
+                feMesh_->toSpace(pts[pointi], U.row(n).transpose());
+        }
+    }
+
+    volVectorField D(io("D"), *mesh_, dimensionedVector(dimLength, Zero));
+    volSymmTensorField sigma
+    (
+        io("sigma"), *mesh_, dimensionedSymmTensor(dimPressure, Zero)
+    );
+    volScalarField sigmaEq(io("sigmaEq"), *mesh_, dimensionedScalar(dimPressure, Zero));
+    volScalarField p(io("p"), *mesh_, dimensionedScalar(dimPressure, Zero));
+    volScalarField epsilonEq(io("epsilonEq"), *mesh_, dimensionedScalar(dimless, Zero));
+
+    const form::elementBlock& blk = fe.blocks[0];
+    const form::vecX Nc = form::quadShapeValues(blk.nodesPerElement, 0, 0);
+    const vectorField& C = mesh_->C();
+    forAll(C, celli)
+    {
+        Eigen::Vector2d u = Eigen::Vector2d::Zero();
+        for (int a = 0; a < blk.nodesPerElement; ++a)
+        {
+            u += Nc(a)*U.row(blk.nodes(celli)[a]).transpose();
+        }
+        D[celli] = feMesh_->toSpace(C[celli], u);
+
+        // Cauchy stress from the FE plane (first, second, out-of-plane) to
+        // the polyMesh space
+        const form::elementResult& r = results[celli];
+        const vector e1 = feMesh_->toSpace(C[celli], Eigen::Vector2d(1, 0));
+        const vector e2 = feMesh_->toSpace(C[celli], Eigen::Vector2d(0, 1));
+        const vector e3 = e1 ^ e2;
+        const tensor Q(e1, e2, e3);     // rows: basis vectors
+        tensor s(Zero);
+        for (direction i = 0; i < 3; ++i)
+        {
+            for (direction j = 0; j < 3; ++j)
+            {
+                s(i, j) = r.cauchy(i, j);
+            }
+        }
+        sigma[celli] = symm(Q.T() & s & Q);
+        sigmaEq[celli] = sqrt(1.5*magSqr(dev(sigma[celli])));
+        p[celli] = r.pressure;
+        epsilonEq[celli] = r.equivalentStrain;
+    }
+    // calculated patches: face values from the nodal displacements
+    forAll(D.boundaryField(), patchi)
+    {
+        fvPatchVectorField& pf = D.boundaryFieldRef()[patchi];
+        if (isA<emptyFvPatch>(pf.patch()) || isA<wedgeFvPatch>(pf.patch()))
+        {
+            continue;
+        }
+        const polyPatch& pp = pf.patch().patch();
+        forAll(pp, i)
+        {
+            const face& f = pp[i];
+            vector sum(Zero);
+            for (const label pointi : f) sum += pointD[pointi];
+            pf[i] = sum/f.size();
+        }
+    }
+    D.correctBoundaryConditions();
+
+    IOField<vector> feU(io("feU"), vectorField(fe.nNodes(), Zero));
+    for (int n = 0; n < fe.nNodes(); ++n)
+    {
+        feU[n] = vector(U(n, 0), U(n, 1), 0);
+    }
+
+    // Material history (plastic strains, back stresses...) for restarts
+    const auto& states = model_->materialStates();
+    label nHist = 0;
+    for (const auto& el : states)
+    {
+        for (const auto& q : el) nHist += q.history.size();
+    }
+    IOField<scalar> feHistory(io("feHistory"), scalarField(nHist, 0));
+    {
+        label k = 0;
+        for (const auto& el : states)
+        {
+            for (const auto& q : el)
+            {
+                for (int i = 0; i < q.history.size(); ++i)
+                {
+                    feHistory[k++] = q.history(i);
+                }
+            }
+        }
+    }
+
+    // Results at the case's writePrecision; the restart state at full
+    // precision (a restart reproduces the run to round-off)
+    bool ok = pointD.write();
+    ok = D.write() && ok;
+    ok = sigma.write() && ok;
+    ok = sigmaEq.write() && ok;
+    ok = p.write() && ok;
+    ok = epsilonEq.write() && ok;
+    const unsigned precision = IOstream::defaultPrecision(17);
+    if (nHist) ok = feHistory.write() && ok;
+    if (model_->contact())
+    {
+        // Contact multipliers, tool positions, committed slip origins
+        const std::vector<double> cs = model_->contact()->state();
+        IOField<scalar> contactState(io("contactState"), scalarField(cs.size()));
+        forAll(contactState, i) contactState[i] = cs[i];
+        ok = contactState.write() && ok;
+    }
+    // Loads of released constraints and tools (dof force t0 t1), for a
+    // restart inside their ramps
+    const std::vector<double> rl = model_->releaseLoads();
+    if (!rl.empty())
+    {
+        IOField<scalar> released(io("feReleased"), scalarField(rl.size()));
+        forAll(released, i) released[i] = rl[i];
+        ok = released.write() && ok;
+    }
+    ok = feU.write() && ok;
+    IOstream::defaultPrecision(precision);
+    return ok;
+}
+
+
+void Foam::solidRegion::writeVTK()
+{
+    vtk_->write
+    (
+        runTime_.value(), feMesh_->feMesh(), model_->displacement(),
+        model_->elementResults()
+    );
+}
+
+
+void Foam::solidRegion::resumeVTK(scalar restartTime)
+{
+    vtk_->resume(restartTime);
+}
+
+
+bool Foam::solidRegion::readState(const word& timeName)
+{
+    IOobject io
+    (
+        "feU", timeName, *mesh_, IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    if (!io.typeHeaderOk<IOField<vector>>(true))
+    {
+        return false;
+    }
+    IOField<vector> feU(io);
+    const form::feMesh& fe = feMesh_->feMesh();
+    if (feU.size() != fe.nNodes())
+    {
+        FatalErrorInFunction
+            << "Restart state " << feU.objectPath() << " has " << feU.size()
+            << " nodes; the mesh of region '" << name_ << "' has "
+            << fe.nNodes() << exit(FatalError);
+    }
+    form::vecX dU = -model_->U();
+    for (int n = 0; n < fe.nNodes(); ++n)
+    {
+        dU(2*n) += feU[n].x();
+        dU(2*n + 1) += feU[n].y();
+    }
+    model_->setDisplacement(model_->U() + dU);
+
+    // Material history, if the material has one
+    std::vector<std::vector<form::materialState>> states =
+        model_->materialStates();
+    label nHist = 0;
+    for (const auto& el : states)
+    {
+        for (const auto& q : el) nHist += q.history.size();
+    }
+    if (nHist)
+    {
+        IOobject hio
+        (
+            "feHistory", timeName, *mesh_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        if (!hio.typeHeaderOk<IOField<scalar>>(true))
+        {
+            FatalErrorInFunction
+                << "Restart state of region '" << name_ << "' at time "
+                << timeName << " has no material history (feHistory), which"
+                << " the material " << materialType_ << " needs"
+                << exit(FatalError);
+        }
+        IOField<scalar> h(hio);
+        if (h.size() != nHist)
+        {
+            FatalErrorInFunction
+                << "Restart state " << h.objectPath() << " has " << h.size()
+                << " history values; the model needs " << nHist
+                << exit(FatalError);
+        }
+        label k = 0;
+        for (auto& el : states)
+        {
+            for (auto& q : el)
+            {
+                for (int i = 0; i < q.history.size(); ++i) q.history(i) = h[k++];
+            }
+        }
+        model_->setMaterialStates(states);
+    }
+    if (model_->contact())
+    {
+        IOobject cio
+        (
+            "contactState", timeName, *mesh_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        if (!cio.typeHeaderOk<IOField<scalar>>(true))
+        {
+            FatalErrorInFunction
+                << "Restart state of region '" << name_ << "' at time "
+                << timeName << " has no contact state (contactState), which"
+                << " the contact pairs of constant/contactProperties need"
+                << exit(FatalError);
+        }
+        IOField<scalar> c(cio);
+        try
+        {
+            model_->contact()->setState(std::vector<double>(c.begin(), c.end()));
+        }
+        catch (const form::numericalError& e)
+        {
+            FatalErrorInFunction
+                << "Restart state " << c.objectPath() << ": " << e.what()
+                << " (was constant/contactProperties changed?)"
+                << exit(FatalError);
+        }
+    }
+    // Releases begun before the restart: their loads (written only when
+    // something was released); formScene then re-applies the release
+    // actions of those steps without new loads
+    IOobject rio
+    (
+        "feReleased", timeName, *mesh_,
+        IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
+    );
+    if (rio.typeHeaderOk<IOField<scalar>>(true))
+    {
+        IOField<scalar> rl(rio);
+        try
+        {
+            model_->setReleaseLoads(std::vector<double>(rl.begin(), rl.end()));
+        }
+        catch (const form::numericalError& e)
+        {
+            FatalErrorInFunction
+                << "Restart state " << rl.objectPath() << ": " << e.what()
+                << exit(FatalError);
+        }
+    }
+    return true;
+}
+
+
+// ************************************************************************* //
