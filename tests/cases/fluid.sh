@@ -91,7 +91,7 @@ FORMFOAM_ARGS= runFluid poiseuillePipe "$work/pp2" \
     "sed -i 's/^nr .*/nr 20;/' system/water/blockMeshDict"
 te=$(tangentError "$work/pp1/log.formFoam")
 checkBelow "pipe: Newton matrix vs finite differences (wedge)" "$te" 1e-6
-qExact=$(awk 'BEGIN { print atan2(0, -1)*0.5^4*32/(8*0.1*10) }')
+qExact=$(awk 'BEGIN { printf "%.15g", atan2(0, -1)*0.5^4*32/(8*0.1*10) }')
 q1=$(summaryValue "$work/pp1" outletFlowRate)
 q2=$(summaryValue "$work/pp2" outletFlowRate)
 # (the planar faces of a 5 degree wedge make the cross-section a polygon:
@@ -125,9 +125,11 @@ checkBelow "radial flow: p(r) - p(r_mid) vs rho c^2/2 (1/r_mid^2 - 1/r^2), 24 ce
 checkBelow "radial flow: u_r vs c/r, 24 cells (rel. to c/r1)" "$u1" 0.005
 checkBelow "radial flow: pressure error second order [2 - log2(e24/e48) < 0.3]" \
     "$(orderShortfall 2 "$p1" "$p2")" 0.3
+# (observed 1.5e-7 at full precision; the check used to read both sides at
+# 6 digits and claim 1e-9: issue 19)
 qr=$(summaryValue "$work/rf1" outletFlowRate)
 checkClose "radial flow: outflow of the full ring 2 pi r1 H u(r1) = pi (the wedge's chords scaled to the ring)" "$qr" \
-    "$(awk 'BEGIN { print atan2(0, -1) }')" 1e-9
+    "$(awk 'BEGIN { printf "%.15g", atan2(0, -1) }')" 5e-7
 
 #- Space conservation: transient (Euler) and steady on the oscillating mesh
 FORMFOAM_ARGS=-checkTangent runFluid spaceConservation "$work/sc1"
