@@ -56,12 +56,14 @@ TEST(cooksMembrane, LameConversionIsExact)
 }
 
 
-TEST(cooksMembrane, Q9P3LinearWithinOnePercentOfReference)
+TEST(cooksMembrane, Q9P3LinearWithinFiveHundredthsOfAPercent)
 {
+    // observed error 0.011 %; 0.05 % fails Q9P3 on 4 x 4 and the
+    // displacement Q9 on 64 x 64 (a looser 1 % passed both)
     const double v = linearCook("Q9P3", 16);
     std::cout << "Cook's linear, Q9P3 16x16: v(48,52) = " << v
               << "  (reference 16.4326)\n";
-    EXPECT_NEAR(v, 16.4326, 0.01*16.4326);
+    EXPECT_NEAR(v, 16.4326, 5e-4*16.4326);
 }
 
 
@@ -79,7 +81,7 @@ TEST(cooksMembrane, Q9P3NearlyIncompressibleConverges)
     // nu = 0.49999: the Q9P3 answer stays at the incompressible reference
     const double v = linearCook("Q9P3", 16, 0.49999);
     std::cout << "Cook's linear, Q9P3 16x16, nu = 0.49999: v = " << v << '\n';
-    EXPECT_NEAR(v, 16.4326, 0.01*16.4326);
+    EXPECT_NEAR(v, 16.4326, 5e-4*16.4326);      // observed 0.013 %
 
     // neo-Hookean with the same small-strain moduli (kappa/G = 5e4) at a
     // tenth of the load (rotations ~ 0.03): converges, and agrees with
