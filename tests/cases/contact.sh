@@ -43,10 +43,11 @@
 #    linear in x^2; the edge so found lies between the last contact node
 #    and the next one; the closed flag lambda > g would also count nodes
 #    just outside whose gap is below sqrt(epsN), with negligible force).
-#    Both within 5 %. The same with
+#    Within 1.5 % (p0) and 2 % (a): observed +0.44 % and -0.60 %; an E*
+#    off by 10 % moves both by 5 %. The same with
 #    the cylinder force-controlled (starting 0.01 above the block, pushed
-#    down with the motion run's force): the same force (1e-6), the same
-#    contact half-width (1e-3) and a final translation of -(0.04 + 0.01)
+#    down with the motion run's force): the same peak pressure (1e-6), the
+#    same contact half-width (1e-3) and a final translation of -(0.04 + 0.01)
 #    (1e-5; the two runs reach the same state).
 # 3. Block 2 x 1 on a fixed rigid flat ground, Coulomb friction mu = 0.3,
 #    dead traction 100 on the top: N = 200 (tests/cases/slidingBlock).
@@ -173,7 +174,7 @@ if run "$c"; then
     # columns: node X Y x y gap normalForce tangentialForce weight pressure shear slip closed
     read -r n nClosed pMean dev sumFn < <(awk '!/^#/ && NF >= 13 {
         ++n; p[n] = $10; s += $10; fn += $7; if ($13 == 1) ++c }
-        END { m = s/n; d = 0
+        END { if (!n) exit; m = s/n; d = 0
               for (i = 1; i <= n; ++i) { e = (p[i] - m)/m; if (e < 0) e = -e; if (e > d) d = e }
               printf "%d %d %.12g %.3g %.12g\n", n, c, m, d, fn }' "$f")
     echo "    flat punch: $n contactor nodes, $nClosed closed, mean pressure $pMean, max |p - mean|/mean $dev"
@@ -198,6 +199,7 @@ hertzResult()
 {
     awk '!/^#/ && NF >= 13 { x[NR] = $4; p[NR] = $10; cl[NR] = $13; k[++n] = NR }
     END {
+        if (!n) exit    # no data: nothing (the checks fail)
         # sort the nodes by current x (insertion sort: ~70 nodes)
         for (i = 2; i <= n; ++i) { j = i; while (j > 1 && x[k[j-1]] > x[k[j]]) { t = k[j]; k[j] = k[j-1]; k[j-1] = t; --j } }
         # contact set: the nodes carrying more than 1 % of the peak
@@ -216,27 +218,28 @@ hertzResult()
 # hertzRef <P full>: prints "a p0"
 hertzRef()
 {
-    awk -v P="$1" -v pi="$pi" 'BEGIN { Es = 200000/(1 - 0.3^2); R = 50
+    awk -v P="$1" -v pi="$pi" 'BEGIN { if (P == "" || P != P + 0) exit; Es = 200000/(1 - 0.3^2); R = 50
         a = sqrt(4*P*R/(pi*Es)); printf "%.10g %.10g\n", a, 2*P/(pi*a) }'
 }
 # hertzChecks <label> <case>: checks; sets hP (full force) and hA (FE a)
 hertzChecks()
 {
     local a p0 pmax nc xc xo
-    hP=$(awk -v h="$(summary "$2" halfForce)" 'BEGIN { printf "%.10g", 2*h }')
+    hP=$(calc '2*h' h="$(summary "$2" halfForce)")
     read -r a p0 < <(hertzRef "$hP")
     read -r pmax hA nc xc xo < <(hertzResult "$2" 1)
     echo "    Hertz ($1): P = $hP, a = $a, p0 = $p0; FE: p_max = $pmax, a = $hA" \
          "($nc contact nodes, last x = $xc, next x = $xo)"
-    checkClose "Hertz ($1): max pressure vs p0 = 2P/(pi a)" "$pmax" "$p0" 0.05
-    checkClose "Hertz ($1): contact half-width vs a = sqrt(4PR/(pi E*))" "$hA" "$a" 0.05
+    # observed: p_max +0.44 %, a -0.60 %; E* off by 10 % moves both by 5 %
+    checkClose "Hertz ($1): max pressure vs p0 = 2P/(pi a)" "$pmax" "$p0" 0.015
+    checkClose "Hertz ($1): contact half-width vs a = sqrt(4PR/(pi E*))" "$hA" "$a" 0.02
+    hPmax=$pmax
 }
 c=$(newCase hertz)
-indentation=0.04
-sed -i "s/(1 (0 -0.04 0))/(1 (0 -$indentation 0))/" "$c/constant/contactProperties"
+indentation=0.04      # as in tests/cases/hertz/constant/contactProperties
 if run "$c"; then
     hertzChecks "motion-controlled" "$c"
-    Pm=$hP; am=$hA
+    am=$hA; pm=$hPmax
     # force-controlled: the cylinder starts 0.01 above the block and is
     # pushed down with the (half model's) force of the motion-controlled run
     cf=$(newCase hertz)
@@ -261,7 +264,9 @@ pairs
 DICT
     if run "$cf"; then
         hertzChecks "force-controlled" "$cf"
-        checkClose "Hertz: force-controlled force vs motion-controlled" "$hP" "$Pm" 1e-6
+        # (the tool's force itself is the force it was given, to the
+        # Newton tolerance: no check; the state it reaches is)
+        checkClose "Hertz: force-controlled max pressure vs motion-controlled" "$hPmax" "$pm" 1e-6
         checkClose "Hertz: force-controlled contact half-width vs motion-controlled" "$hA" "$am" 1e-3
         checkClose "Hertz: force-controlled translation vs -(indentation + gap 0.01)" \
             "$(summary "$cf" toolY)" "$(awk -v d="$indentation" 'BEGIN { printf "%.10g", -(d + 0.01) }')" 1e-5
@@ -327,10 +332,10 @@ if run "$c"; then
     checkClose "sliding block: normal force vs applied 100 x 2" "$(summary "$c" normalForce)" 200 1e-8
     checkClose "(a) sliding: friction force (toolForce) vs mu N" "$Ft" "$muN" 0.005
     # the ground's outline runs in -x: tangentialForce > 0 points in -x
-    sumFt=$(awk '!/^#/ && NF >= 13 { s += $8 } END { printf "%.10g", s }' "$(contactFile "$c" 3 blockBottom)")
+    sumFt=$(awk '!/^#/ && NF >= 13 { s += $8; ++n } END { if (n) printf "%.10g", s }' "$(contactFile "$c" 3 blockBottom)")
     checkClose "(a) sliding: sum of nodal tangential forces vs toolForce" "$sumFt" "$Ft" 1e-8
     read -r sMin sMax < <(awk '!/^#/ && NF >= 13 { s = $12 < 0 ? -$12 : $12; if (n++ == 0 || s < a) a = s; if (s > b) b = s }
-        END { printf "%.6g %.6g\n", a, b }' "$(contactFile "$c" 3 blockBottom)")
+        END { if (n) printf "%.6g %.6g\n", a, b }' "$(contactFile "$c" 3 blockBottom)")
     echo "    (a) |slip| over the last step (output column): min $sMin, max $sMax (push increment (0.01 - 0.001)/4 = 0.00225)"
     checkClose "(a) sliding: output slip over the last step (smallest node) vs push increment" "$sMin" 0.00225 1e-3
     # (c) history: # time frictionForce normalForce slipRight. Sliding
@@ -378,13 +383,13 @@ if run "$c"; then
     # reaction at the restart state is the load still to ramp down
     slidingRestart "(b) restart inside the constraint-release ramp" "$c" 1.5 2
     # slip during the pull: x movement of the bottom nodes between t = 1 and 2
-    slip=$(awk '!/^#/ && NF >= 13 { if (FNR == NR) x[$1] = $4; else { d = $4 - x[$1]; if (d < 0) d = -d; if (d > m) m = d } }
-        END { printf "%.3g", m }' "$(contactFile "$c" 1 blockBottom)" "$(contactFile "$c" 2 blockBottom)")
+    slip=$(awk '!/^#/ && NF >= 13 { if (FNR == NR) x[$1] = $4; else { ++n; d = $4 - x[$1]; if (d < 0) d = -d; if (d > m) m = d } }
+        END { if (n) printf "%.3g", m }' "$(contactFile "$c" 1 blockBottom)" "$(contactFile "$c" 2 blockBottom)")
     maxSlipStep=$(awk '!/^#/ && NF >= 13 { d = $12 < 0 ? -$12 : $12; if (d > m) m = d } END { printf "%.3g", m }' \
         "$(contactFile "$c" 2 blockBottom)")
     echo "    (b) max bottom-node movement during the pull $slip (block length 2), max |slip| column at t = 2: $maxSlipStep"
     checkBelow "(b) sticking: max bottom-node movement / block length" \
-        "$(awk -v s="$slip" 'BEGIN { printf "%.3g", s/2 }')" 2e-5
+        "$(calc 's/2' s="$slip")" 2e-5
 else
     reportFailure "sticking block run" "$c"
 fi
@@ -426,7 +431,7 @@ if run "$c"; then
     echo "    release ramp: top displacement $uMid at t = 1.75, $uEnd at t = 2"
     checkClose "release ramp: top displacement at t = 1.75 vs -0.01 x 0.25" "$uMid" -0.0025 1e-6
     checkBelow "release ramp: |top displacement| at t = 2 (fully released)" \
-        "$(awk -v u="$uEnd" 'BEGIN { printf "%.3g", u < 0 ? -u : u }')" 1e-9
+        "$(calc 'abs(u)' u="$uEnd")" 1e-9
     r=$(restartCopy "$c" 1.5 1.75 2)
     if restarted "$r" 1.5
     then
@@ -434,7 +439,7 @@ if run "$c"; then
         checkClose "restart inside the release ramp: top displacement at t = 1.75 vs continuous run" \
             "$(summary "$r" topMidRelease)" "$uMid" 1e-8
         checkBelow "restart inside the release ramp: |top displacement| at t = 2" \
-            "$(awk -v u="$(summary "$r" topDisplacement)" 'BEGIN { printf "%.3g", u < 0 ? -u : u }')" 1e-9
+            "$(calc 'abs(u)' u="$(summary "$r" topDisplacement)")" 1e-9
         # the history before the restart is kept and replayed: the largest
         # punch force (at t = 1) and a value at t = 0.75 come out as in
         # the continuous run, and history.dat has each time once
@@ -472,7 +477,7 @@ punchForceChecks()
     checkClose "elastic punch ($1): punch reaction vs E/(1 - nu^2) 0.01/7 x 10" "$2" "$FD" "$4"
     checkClose "elastic punch ($1): punch reaction vs bottom reaction (equilibrium)" "$2" "$3" 1e-8
     checkBelow "elastic punch ($1): Newton iterations per step" \
-        "$(awk -v i="$5" -v s="$6" 'BEGIN { printf "%.3g", i/s }')" 6.01
+        "$(calc 'i/s' i="$5" s="$6")" 6.01
 }
 # deformablePunch <nPunch> <pressure tolerance> <force tolerance> <label>
 deformablePunch()
@@ -485,7 +490,7 @@ deformablePunch()
         read -r n nClosed pMin pMax dev < <(awk -v p="$pD" '!/^#/ && NF >= 13 {
             ++n; if ($13 == 1) ++c; e = ($10 - p)/p; if (e < 0) e = -e; if (e > d) d = e
             if (n == 1 || $10 < mn) mn = $10; if (n == 1 || $10 > mx) mx = $10 }
-            END { printf "%d %d %.6g %.6g %.3g\n", n, c, mn, mx, d }' "$f")
+            END { if (n) printf "%d %d %.6g %.6g %.3g\n", n, c, mn, mx, d }' "$f")
         local F Fb
         F=$(summary "$c" punchReaction)
         Fb=$(summary "$c" bottomReaction)
@@ -494,7 +499,7 @@ deformablePunch()
         echo "    elastic punch, $label ($np punch / 8 block elements): $nClosed of $n contactor nodes closed," \
              "nodal pressure $pMin .. $pMax (exact $pD, max error $dev), force $F (exact $FD)," \
              "Newton $its iterations in $steps steps"
-        [ "$nClosed" = "$n" ] && pass "elastic punch ($label, $np): all $n contactor nodes closed" \
+        [ "$nClosed" = "$n" ] && [ "${n:-0}" -gt 0 ] && pass "elastic punch ($label, $np): all $n contactor nodes closed" \
             || fail "elastic punch ($label, $np): $nClosed of $n contactor nodes closed"
         checkBelow "elastic punch ($label, $np): max |p - p_exact|/p_exact" "$dev" "$ptol"
         punchForceChecks "$label, $np" "$F" "$Fb" "$ftol" "$its" "$steps"

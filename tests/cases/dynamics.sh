@@ -31,8 +31,8 @@ reportFailure() { fail "$1 (see $2/log.formFoam)"; tail -15 "$2/log.formFoam" | 
 # energy.dat (columns time kinetic internalWork externalWork dissipated),
 # the last dissipated energy relative to the largest external work, or
 # the largest external work
-energyLast() { awk -v f="$2" '!/^#/ { last = $0; if ($4 > m) m = $4 }
-    END { split(last, c, " "); if (f == "relDissipated") printf "%.6g", c[5]/m
+energyLast() { awk -v f="$2" '!/^#/ { ++n; last = $0; if ($4 > m) m = $4 }
+    END { if (!n) exit; split(last, c, " "); if (f == "relDissipated") printf "%.6g", c[5]/m
           else if (f == "maxExternal") printf "%.6g", m }' "$1/postProcessing/energy.dat"; }
 
 us=0.01
@@ -40,8 +40,13 @@ s=1e-3
 # passIf <awk condition> <pass message> <fail message> <awk -v options...>
 passIf()
 {
-    local cond=$1 ok=$2 bad=$3
+    local cond=$1 ok=$2 bad=$3 a
     shift 3
+    # a value that is not a number (missing data) fails
+    for a in "$@"; do
+        [ "$a" = -v ] && continue
+        [[ ${a#*=} =~ ^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$ ]] || { fail "$bad"; return; }
+    done
     if awk "$@" "BEGIN { exit !($cond) }"; then pass "$ok"; else fail "$bad"; fi
 }
 # tipChecks <label> <case>: the tip at t = L/c and its largest displacement
@@ -58,9 +63,9 @@ trap=$(newCase dynamicBar)
 if run "$trap"; then
     tipChecks trapezoidal "$trap"
     checkBelow "trapezoidal: tip back at rest at t = 4 L/c (|u|/2 u_s)" \
-        "$(awk -v u="$(summary "$trap" tipAt40)" -v s="$us" 'BEGIN { v = u/(2*s); print v < 0 ? -v : v }')" 0.03
+        "$(calc 'abs(u/(2*s))' u="$(summary "$trap" tipAt40)" s="$us")" 0.03
     checkBelow "trapezoidal: energy conserved (|dissipated| / largest external work)" \
-        "$(awk -v d="$(energyLast "$trap" relDissipated)" 'BEGIN { print d < 0 ? -d : d }')" 1e-9
+        "$(calc 'abs(d)' d="$(energyLast "$trap" relDissipated)")" 1e-9
     if grep -q "analysis: dynamic, trapezoidal, consistent mass, density 1" "$trap/log.formFoam"; then
         pass "the scene names the integrator, the mass and the density"
     else
@@ -84,8 +89,8 @@ if run "$bathe"; then
         "bathe: dissipated energy $d of the largest external work, expected in (1e-4, 0.02)" -v d="$d"
     # Wall reaction: exact 2 s after the reflection; the overshoot is the
     # spurious ringing of the sharp front
-    oT=$(awk -v f="$(summary "$trap" wallForceMin)" -v s="$s" 'BEGIN { print -f/(2*s) - 1 }')
-    oB=$(awk -v f="$(summary "$bathe" wallForceMin)" -v s="$s" 'BEGIN { print -f/(2*s) - 1 }')
+    oT=$(calc '-f/(2*s) - 1' f="$(summary "$trap" wallForceMin)" s="$s")
+    oB=$(calc '-f/(2*s) - 1' f="$(summary "$bathe" wallForceMin)" s="$s")
     passIf 'b >= 0 && b < 0.6*a && a < 0.3' \
         "wall force overshoot: trapezoidal $oT, bathe $oB (less than 0.6 x)" \
         "wall force overshoot: trapezoidal $oT, bathe $oB (expected bathe < 0.6 x trapezoidal)" \
@@ -162,18 +167,18 @@ impactRun() { (cd "$1" && blockMesh -region bar > log.blockMesh 2>&1 && formFoam
 plateauDeviation()
 {
     awk 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "wallForce") c = i - 1; next }
-         !/^#/ && $1 >= 12 && $1 <= 28 { d = $c/1e-3 - 1; if (d < 0) d = -d; if (d > m) m = d }
-         END { printf "%.4g", m }' "$1/postProcessing/history.dat"
+         c && !/^#/ && $1 >= 12 && $1 <= 28 { ++n; d = $c/1e-3 - 1; if (d < 0) d = -d; if (d > m) m = d }
+         END { if (n) printf "%.4g", m }' "$1/postProcessing/history.dat"
 }
 impact=$(newCase barImpact)
 if impactRun "$impact"; then
     checkClose "impact, bathe: contact force at t = 20 = rho c v0 A" "$(summary "$impact" wallForceAt20)" 1e-3 0.03
     checkBelow "impact, bathe: contact force over the plateau t = 12..28 within 10 %" "$(plateauDeviation "$impact")" 0.1
-    checkBelow "impact, bathe: no force before the impact (t = 9, relative)"         "$(awk -v f="$(summary "$impact" wallForceAt9)" 'BEGIN { print f/1e-3 }')" 1e-3
-    checkBelow "impact, bathe: no force after the separation (t = 32, relative)"         "$(awk -v f="$(summary "$impact" wallForceAt32)" 'BEGIN { print f/1e-3 }')" 1e-3
+    checkBelow "impact, bathe: no force before the impact (t = 9, |f|/(rho c v0 A))"         "$(awk -v f="$(summary "$impact" wallForceAt9)" 'BEGIN { if (f == "") exit; v = f/1e-3; print v < 0 ? -v : v }')" 1e-3
+    checkBelow "impact, bathe: no force after the separation (t = 32, |f|/(rho c v0 A))"         "$(awk -v f="$(summary "$impact" wallForceAt32)" 'BEGIN { if (f == "") exit; v = f/1e-3; print v < 0 ? -v : v }')" 1e-3
     checkClose "impact, bathe: left end at the wall at t = 20" "$(summary "$impact" leftAt20)" -0.01 0.01
     checkClose "impact, bathe: right end stopped at t = 20" "$(summary "$impact" rightAt20)" -0.02 0.03
-    checkBelow "impact, bathe: rebound with -v0 (|u_right(40)| / 0.02)"         "$(awk -v u="$(summary "$impact" rightAt40)" 'BEGIN { v = u/0.02; print v < 0 ? -v : v }')" 0.05
+    checkBelow "impact, bathe: rebound with -v0 (|u_right(40)| / 0.02)"         "$(calc 'abs(u/0.02)' u="$(summary "$impact" rightAt40)")" 0.05
     # The trapezoidal rule: the contact force rings (spurious, undamped)
     trapImpact=$(newCase barImpact)
     setEntry "$trapImpact" integrator trapezoidal
@@ -223,9 +228,9 @@ if (cd "$slide" && blockMesh -region block > log.blockMesh 2>&1 && formFoam > lo
     checkClose "sliding (dynamic): friction force = mu N" "$(summary "$slide" frictionForce)" 60 1e-4
     checkClose "sliding (dynamic): distance a t^2/2" "$d" 3.75 0.005
     checkClose "sliding (dynamic): kinetic energy m (a t)^2/2" "$kin" 225 0.005
-    checkClose "sliding (dynamic): friction work = -mu N d" "$fri" "$(awk -v d="$d" 'BEGIN { print -60*d }')" 0.01
+    checkClose "sliding (dynamic): friction work = -mu N d" "$fri" "$(calc '-60*d' d="$d")" 0.01
     checkBelow "sliding (dynamic): work of the normal contact force / kinetic energy" \
-        "$(awk -v c="$con" -v f="$fri" -v k="$kin" 'BEGIN { w = (c - f)/k; print w < 0 ? -w : w }')" 1e-3
+        "$(calc 'abs((c - f)/k)' c="$con" f="$fri" k="$kin")" 1e-3
 else
     reportFailure "dynamic sliding block" "$slide"
 fi
@@ -257,11 +262,11 @@ if (cd "$stop" && blockMesh -region block > log.blockMesh 2>&1 && formFoam > log
     checkClose "coming to rest: stop time v0/(mu N/m) (first time T < 1e-6 T_0)" \
         "$(awk '!/^#/ && $2 < 225e-6 { print $1; exit }' "$e")" 0.5 0.01
     checkBelow "coming to rest: largest kinetic energy after t = 0.6, / T_0" \
-        "$(awk '!/^#/ && $1 > 0.6 && $2 > m { m = $2 } END { printf "%.3g", m/225 }' "$e")" 1e-6
+        "$(awk '!/^#/ && $1 > 0.6 { ++n; if ($2 > m) m = $2 } END { if (n) printf "%.3g", m/225 }' "$e")" 1e-6
     checkClose "coming to rest: friction work = -T_0" \
         "$(awk '!/^#/ { f = $7 } END { print f }' "$e")" -225 0.05
     checkBelow "coming to rest: change of the balance error after the first step, / T_0" \
-        "$(awk '!/^#/ { if (n++ == 1) d1 = $5; d = $5 } END { x = (d - d1)/225; printf "%.3g", x < 0 ? -x : x }' "$e")" 1e-3
+        "$(awk '!/^#/ { if (n++ == 1) d1 = $5; d = $5 } END { if (n < 2) exit; x = (d - d1)/225; printf "%.3g", x < 0 ? -x : x }' "$e")" 1e-3
 else
     reportFailure "block coming to rest" "$stop"
 fi

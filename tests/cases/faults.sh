@@ -223,7 +223,10 @@ if mount -t tmpfs -o size=400k tmpfs "$d" 2>/dev/null; then
     umount "$d"
     rm -f /tmp/formFoamDiskFull.log
 else
-    echo "faults.sh: cannot mount a tmpfs here (not root?): the full-disk check is skipped"
+    for q in "a full disk" "the message names the last complete time" \
+             "time directories left incomplete by the full disk"; do
+        skip "$q: cannot mount a tmpfs here (not root?)"
+    done
 fi
 
 rm -rf "$work"

@@ -20,7 +20,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 c=$(caseCopy hemming)
 summary() { summaryValue "$c" "$1"; }
 
-if (cd "$c" && ./Allrun > log.Allrun 2>&1) && [ -f "$c/postProcessing/summary" ]; then
+if (cd "$c" && timeout 1800 ./Allrun > log.Allrun 2>&1) && [ -f "$c/postProcessing/summary" ]; then
     checkClose "flange turned 90 deg by flanging" "$(summary flangeAngleFlanged)" 90 0.034
     checkClose "flange turned 135 deg by pre-hemming (45 deg tool face)" "$(summary flangeAnglePreHemmed)" 135 0.05
     checkClose "flange turned 180 deg by final hemming" "$(summary flangeAngleHemmed)" 180 0.0056
@@ -32,7 +32,7 @@ if (cd "$c" && ./Allrun > log.Allrun 2>&1) && [ -f "$c/postProcessing/summary" ]
     done < "$here/hemming.reference"
     read -r wext diss < <(awk '!/^#/ { w = $4; d = $5 } END { print w, d }' "$c/postProcessing/energy.dat")
     checkBelow "hemming: energy dissipated by the trapezoidal rule / external work" \
-        "$(awk -v w="$wext" -v d="$diss" 'BEGIN { r = d/w; print r < 0 ? -r : r }')" 1e-6
+        "$(calc 'abs(d/w)' w="$wext" d="$diss")" 1e-6
     echo "    hemming: $(summary newtonIterationsPerStep) Newton iterations per step" \
          "at most $(summary maxIterationsInAStep) in a step," \
          "$(summary cutbacks) cutbacks, $(summary steps) steps, wall time $(summary wallTime) s"

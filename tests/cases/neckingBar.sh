@@ -8,11 +8,13 @@
 # 2. radius ratio at the neck at 12 mm elongation against our own converged
 #    fine run (tutorials/neckingBar/reference/formFoam-fine.dat: 40 x 80
 #    graded Q9P3, 140 nominal steps; no published numbers were available,
-#    see reference/README.md); the final value at 14 mm is not converged
-#    and is not tested.
+#    see reference/README.md): a regression check against our own code;
+#    the run stops at 12 mm (the tutorial goes on to 14 mm, where the
+#    result is not converged and nothing is asserted).
 . "$(dirname "$0")/testFunctions"
 
 c=$(caseCopy neckingBar)
+sed -i 's/^endTime .*/endTime         6;/' "$c/system/controlDict"
 (cd "$c" && blockMesh -region bar > log.blockMesh 2>&1 && formFoam > log.formFoam 2>&1) \
     || fail "necking bar run (see $c/log.formFoam)"
 considere=$(awk 'BEGIN {
@@ -26,10 +28,12 @@ considere=$(awk 'BEGIN {
     }
     printf "%.8g", s*atan2(0, -1)*r*r*exp(-e) }')
 echo "    Considere estimate of the maximum force: $considere N"
-checkClose "maximum force vs Considere's condition" \
-    "$(summaryValue "$c" maxForce)" "$considere" 0.02
+# one-sided: the FE maximum lies above the estimate (observed +0.46 %),
+# by at most 1.5 %
+checkBetween "maximum force above Considere's estimate, by at most 1.5 %" \
+    "$(summaryValue "$c" maxForce)" "$considere" "$(awk -v c="$considere" 'BEGIN { printf "%.8g", 1.015*c }')"
 ref12=$(awk '$1 == "12.0000" { print $3 }' "$formFoamTop/tutorials/neckingBar/reference/formFoam-fine.dat")
-checkClose "neck radius ratio at 12 mm vs converged fine run" \
+checkClose "neck radius ratio at 12 mm vs converged fine run (regression, own code)" \
     "$(summaryValue "$c" neckRadiusRatio12)" "$ref12" 0.02
 checkBelow "cutbacks" "$(summaryValue "$c" cutbacks)" 20
 rm -rf "$c"

@@ -19,9 +19,10 @@ punch()   # punch <element> <n>: prints the limit pressure
     local d
     d=$(mktemp -d "${TMPDIR:-/tmp}/formFoamPunch.XXXXXX")
     cp -r "$(dirname "$0")/prandtlPunch/." "$d/"
-    sed -i "s/^n   4;/n   $2;/; s/^nr  8;/nr  $((2*$2));/; s/^ny  12;/ny  $((3*$2));/" \
+    # (the case as stored is Q9P3 with n = 4: edit only what differs)
+    [ "$2" = 4 ] || sed -i "s/^n   4;/n   $2;/; s/^nr  8;/nr  $((2*$2));/; s/^ny  12;/ny  $((3*$2));/" \
         "$d/system/block/blockMeshDict"
-    sed -i "s/elementType     Q9P3;/elementType     $1;/" "$d/constant/block/solidProperties"
+    [ "$1" = Q9P3 ] || sed -i "s/elementType     Q9P3;/elementType     $1;/" "$d/constant/block/solidProperties"
     (cd "$d" && blockMesh -region block > log.blockMesh 2>&1 && formFoam > log.formFoam 2>&1) \
         && summaryValue "$d" punchPressure
     [ -z "${3:-}" ] || cp "$d/log.formFoam" "$3"
@@ -37,18 +38,23 @@ echo "    Q9P3: n = 4 $p4, n = 8 $p8;  Q4: n = 4 $q4, n = 8 $q8"
 # Newton converges quadratically in elastic-plastic flow (consistent
 # tangent of the return mapping, the log-strain kinematics and the element)
 rate=$(newtonOrder "$punchLog")
-if awk -v q="$rate" 'BEGIN { exit !(q != "none" && q > 1.6 && q < 2.6) }'; then
+if awk -v q="$rate" 'BEGIN { exit !(q != "" && q != "none" && q > 1.6 && q < 2.6) }'; then
     pass "punch (plastic flow) Newton convergence order $rate (quadratic: ~2)"
 else
     fail "punch (plastic flow) Newton convergence order $rate (expected ~2)"
 fi
 rm -f "$punchLog"
-checkClose "Q9P3 limit pressure unchanged on refinement (n 4 -> 8)" "$p4" "$p8" 0.02
-checkClose "Q9P3 limit pressure vs Prandtl (n = 8)" "$p8" "$prandtl" 0.05
+# the limit load converges from above (observed: +4.1 % at n = 4, +2.8 %
+# at n = 8): it falls on refinement, by at most 2 %, and lies within 4 %
+# above Prandtl's
+checkBetween "Q9P3 limit pressure falls on refinement, by at most 2 % (n 4 -> 8)" \
+    "$p8" "$(calc '0.98*p' p="$p4")" "$p4"
+checkBetween "Q9P3 limit pressure above Prandtl, by at most 4 % (n = 8)" \
+    "$p8" "$prandtl" "$(awk -v p="$prandtl" 'BEGIN { printf "%.10g", 1.04*p }')"
 checkBelow "Q4 locks: Prandtl + 10 % below its pressure (n = 4)" \
     "$(awk -v p="$prandtl" 'BEGIN { printf "%.10g", 1.1*p }')" "$q4"
 checkBelow "Q4 locks: still above Q9P3 by 5 % at n = 8" \
-    "$(awk -v p="$p8" 'BEGIN { printf "%.10g", 1.05*p }')" "$q8"
+    "$(calc '1.05*p' p="$p8")" "$q8"
 
 # 2. A log strain of 0.5 in one step: single 9/3 element in plane-strain
 #    tension (bottom fixed in y, left in x, top pulled to stretch e^0.5)
@@ -90,7 +96,8 @@ sed -i 's/punchPressure/topForce/; s/patch       punch;/patch       top;/; s/sca
     || fail "log strain 0.5 in one step (see $d/log.formFoam)"
 checkBelow "log strain 0.5 in one step: no cutback" "$(summaryValue "$d" cutbacks)" 1
 ref=$(awk -v l="$lambda" 'BEGIN { e = 2/sqrt(3)*0.5; printf "%.10g", 2/sqrt(3)*500*(0.01 + e)^0.25/l }')
+# observed -0.12 % (the reference neglects the elastic strains)
 checkClose "log strain 0.5 in one step: force vs homogeneous solution" \
-    "$(summaryValue "$d" topForce)" "$ref" 0.01
+    "$(summaryValue "$d" topForce)" "$ref" 0.005
 echo "    one-step Newton iterations: $(summaryValue "$d" newtonIterations)"
 [ -n "${KEEP:-}" ] && echo "    kept $d" || rm -rf "$d"

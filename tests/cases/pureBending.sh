@@ -8,12 +8,14 @@
 . "$(dirname "$0")/testFunctions"
 
 c=$(caseCopy pureBendingSpringback)
-(cd "$c" && ./Allrun -noVariants > log.Allrun 2>&1) || fail "pure bending run (see $c/log.formFoam)"
+(cd "$c" && timeout 1800 ./Allrun -noVariants > log.Allrun 2>&1) || fail "pure bending run (see $c/log.formFoam)"
+# Tolerances: observed +0.027 % (closed form) and -0.007 % (Swift); 0.1 %
+# of the radius is 0.43 % of the springback curvature change 1/50 - 1/R
+# (the old 1 % passed a 4-6 % error in it). The loaded radius is not
+# checked: it is L over the end rotation, which the case prescribes.
 R=$(summaryValue "$c" radiusAfterSpringback)
 checkClose "perfect plasticity: radius after springback vs closed form" \
-    "$R" "$(summaryValue "$c" radiusAnalytic)" 0.01
-checkClose "radius at the end of bending vs prescribed 50" \
-    "$(summaryValue "$c" radiusLoaded)" 50 0.005
+    "$R" "$(summaryValue "$c" radiusAnalytic)" 1e-3
 checkBelow "Newton iterations per step" "$(summaryValue "$c" newtonIterationsPerStep)" 8
 
 # Restart from the bent state at t = 1 (springback only)
@@ -30,7 +32,7 @@ checkClose "restart: radius after springback equals the continuous run" \
 
 # Swift hardening against the numerical integration
 s="$c/swift"
-(cd "$s" && ./Allrun > log.Allrun 2>&1) || fail "Swift run (see $s/log.formFoam)"
+(cd "$s" && timeout 1800 ./Allrun > log.Allrun 2>&1) || fail "Swift run (see $s/log.formFoam)"
 checkClose "Swift: radius after springback vs through-thickness integration" \
-    "$(summaryValue "$s" radiusAfterSpringback)" "$(summaryValue "$s" radiusAnalytic)" 0.01
+    "$(summaryValue "$s" radiusAfterSpringback)" "$(summaryValue "$s" radiusAnalytic)" 5e-4
 rm -rf "$c" "$r"

@@ -41,16 +41,29 @@ done
 ux=$(summaryValue "$work/csm20" tipX); uy=$(summaryValue "$work/csm20" tipY)
 checkClose "CSM1 20 x 2: ux(A) vs -7.187 mm" "$ux" -7.187e-3 0.02
 checkClose "CSM1 20 x 2: uy(A) vs -66.10 mm" "$uy" -66.10e-3 0.02
-e10=$(awk -v u="$(summaryValue "$work/csm10" tipY)" 'BEGIN { d = u + 66.10e-3; print d < 0 ? -d : d }')
-e20=$(awk -v u="$uy" 'BEGIN { d = u + 66.10e-3; print d < 0 ? -d : d }')
-e40=$(awk -v u="$(summaryValue "$work/csm40" tipY)" 'BEGIN { d = u + 66.10e-3; print d < 0 ? -d : d }')
+# uyError <value>: |uy + 66.10 mm|; nothing if the value is missing (the
+# checks below then fail)
+uyError() { awk -v u="$1" 'BEGIN { if (u == "" || u != u + 0) exit; d = u + 66.10e-3; print d < 0 ? -d : d }'; }
+e10=$(uyError "$(summaryValue "$work/csm10" tipY)")
+e20=$(uyError "$uy")
+e40=$(uyError "$(summaryValue "$work/csm40" tipY)")
 echo "CSM1 uy(A) errors (m): 10 x 1 $e10, 20 x 2 $e20, 40 x 4 $e40"
-checkBelow "CSM1: the uy error falls from 10 x 1 to 20 x 2" "$e20" "$e10"
+if [ -n "$e10" ]; then
+    checkBelow "CSM1: the uy error falls from 10 x 1 to 20 x 2" "$e20" "$e10"
+else
+    fail "CSM1: the uy error falls from 10 x 1 to 20 x 2: no 10 x 1 result"
+fi
 checkBelow "CSM1: 40 x 4 within 0.5 % of the benchmark" "$e40" 3.3e-4
-checkClose "CSM1: clamp reaction = weight (rho g 0.35 x 0.02, less the arc)" \
-    "$(summaryValue "$work/csm20" clampReaction)" 14 0.01
+# the flag's weight rho g A per unit depth, A = 0.4 x 0.02 less the circle
+# segment int sqrt(r^2 - s^2) ds over |s| <= 0.01 (r = 0.05) = 0.0070067;
+# observed +0.05 % (the Q9 mid-side nodes on the chords of the arc)
+weight=$(awk 'BEGIN { r = 0.05; a = 0.01
+    seg = a*sqrt(r*r - a*a) + r*r*atan2(a/r, sqrt(1 - (a/r)^2))
+    printf "%.12g", 1000*2*(0.4*0.02 - seg) }')
+checkClose "CSM1: clamp reaction = the flag's weight rho g A ($weight)" \
+    "$(summaryValue "$work/csm20" clampReaction)" "$weight" 2e-3
 q=$(newtonOrder "$work/csm20/log.formFoam")
-checkBelow "CSM1: Newton order $q (2 - q)" "$(awk -v q="$q" 'BEGIN { print 2 - q }')" 0.3
+checkBelow "CSM1: Newton order $q (2 - q)" "$(calc '2 - q' q="$q")" 0.3
 
 #- Bad input
 base=$work/base

@@ -10,7 +10,8 @@
 #    of the result, the mesh and eps studies of the README against its
 #    accuracy. Springback must cost less than forming (the paper: below
 #    0.1 of it).
-# 2. Hard cases, forming to a 20 mm stroke only:
+# 2. Hard cases, forming to a 5 mm stroke only (what they test is decided
+#    at first contact, in the first millimetres):
 #    a. punch and die radii equal to 2 t (1.56 mm) instead of 5 mm;
 #    b. the blank holder starts 2 mm above the blank: force-controlled, it
 #       is moved onto the blank before the first step (no singular
@@ -35,7 +36,7 @@ stroke()
     local t
     t=$(awk -v s="$s" 'BEGIN { printf "%.6g", s/70.1 }')
     sed -i "s/^endTime .*/endTime         $t;/" "$c/system/controlDict"
-    python3 - "$c/constant/processSchedule" "$t" <<'EOF'
+    python3 - "$c/constant/processSchedule" "$t" <<'EOF' || fail "U-channel stroke: cannot edit processSchedule"
 import sys
 p, t = sys.argv[1], sys.argv[2]
 s = open(p).read()
@@ -43,12 +44,15 @@ s = s[:s.index('steps')] + 'steps { forming { endTime %s; deltaT 0.002; maxDelta
 open(p, 'w').write(s)
 EOF
     # springback entries need a formed channel: keep the forming ones only
-    python3 - "$c/system/solidSolution" <<'EOF'
+    # (every one of them must be found: a renamed entry fails the edit)
+    python3 - "$c/system/solidSolution" <<'EOF' || fail "U-channel stroke: an entry to remove from solidSolution is missing"
 import sys, re
 p = sys.argv[1]
 s = open(p).read()
 for name in ('theta1', 'theta2', 'rho', 'theta1Formed', 'theta2Formed', 'punchForce'):
-    s = re.sub(r'\n    %s\s*\{[^}]*\}' % name, '', s)
+    s, n = re.subn(r'\n    %s\s*\{[^}]*\}' % name, '', s)
+    if n != 1:
+        sys.exit(1)
 open(p, 'w').write(s)
 EOF
 }
@@ -56,15 +60,15 @@ EOF
 #------------------------------------------------------------------------------
 # 1. The tutorial against the recorded run
 c=$(caseCopy numisheet93UChannel)
-if (cd "$c" && ./Allrun > log.Allrun 2>&1); then
+if (cd "$c" && timeout 1800 ./Allrun > log.Allrun 2>&1); then
     for q in theta1 theta2; do
         v=$(value "$c" $q); r=$(ref $q)
         if awk -v v="$v" -v r="$r" 'BEGIN { d = v - r; if (d < 0) d = -d; exit !(v != "" && d <= 0.05) }'
-        then pass "U-channel: $q $v vs recorded $r (0.05 deg)"
-        else fail "U-channel: $q $v vs recorded $r (0.05 deg)"; fi
+        then pass "U-channel: $q $v vs recorded run $r (0.05 deg; regression, own code)"
+        else fail "U-channel: $q $v vs recorded run $r (0.05 deg; regression, own code)"; fi
     done
-    checkClose "U-channel: rho vs recorded" "$(value "$c" rho)" "$(ref rho)" 0.01
-    checkClose "U-channel: punchForceMax vs recorded" \
+    checkClose "U-channel: rho vs recorded run (regression)" "$(value "$c" rho)" "$(ref rho)" 0.01
+    checkClose "U-channel: punchForceMax vs recorded run (regression)" \
         "$(value "$c" punchForceMax)" "$(ref punchForceMax)" 0.01
     checkBelow "U-channel: springback / forming wall time" \
         "$(awk -v s="$(value "$c" springbackWallTime)" -v f="$(value "$c" formingWallTime)" \
@@ -85,7 +89,7 @@ static=$c
 #    negligible (the
 #    largest kinetic energy below 1e-5 of the work done on the blank)
 d=$(caseCopy numisheet93UChannel)
-if (cd "$here/../../tutorials/numisheet93UChannel" && ./Allrun -case "$d" -dynamic > "$d/log.Allrun" 2>&1) \
+if (cd "$here/../../tutorials/numisheet93UChannel" && timeout 1800 ./Allrun -case "$d" -dynamic > "$d/log.Allrun" 2>&1) \
     && [ -f "$d/postProcessing/energy.dat" ]
 then
     for q in theta1 theta2; do
@@ -105,19 +109,18 @@ fi
 [ -n "${KEEP:-}" ] || rm -rf "$static" "$d"
 
 #------------------------------------------------------------------------------
-# hardCase <label> <sed expression> <grep pattern proving the edit>:
-# a 20 mm stroke of the tutorial with contactProperties edited; must run
-# through. Leaves the case in $c for further checks.
+# hardCase <label> <sed expression>: a 5 mm stroke of the tutorial with
+# contactProperties edited (an edit that changes nothing fails: sed in
+# testFunctions); must run through. Leaves the case in $c for further
+# checks.
 hardCase()
 {
     c=$(caseCopy numisheet93UChannel)
-    stroke "$c" 20
+    stroke "$c" 5
     sed -i "$2" "$c/constant/contactProperties"
-    grep -q "$3" "$c/constant/contactProperties" \
-        || fail "U-channel $1: could not edit contactProperties"
     if (cd "$c" && blockMesh -region blank > log.blockMesh 2>&1 && formFoam > log.formFoam 2>&1)
     then
-        pass "U-channel $1: 20 mm stroke, $(value "$c" steps) steps, $(value "$c" cutbacks) cutbacks"
+        pass "U-channel $1: 5 mm stroke, $(value "$c" steps) steps, $(value "$c" cutbacks) cutbacks"
         return 0
     fi
     fail "U-channel $1 (see $c/log.formFoam)"
@@ -127,12 +130,12 @@ hardCase()
 
 # 2a. Tool radii of 2 t (punch and die)
 hardCase "with punch and die radii 2 t = 1.56 mm" \
-    's/radii       (5);/radii       (1.56);/' "radii       (1.56);"
+    's/radii       (5);/radii       (1.56);/'
 [ -n "${KEEP:-}" ] || rm -rf "$c"
 
 # 2b. Blank holder force applied before contact exists
 if hardCase "with the holder 2 mm above the blank" \
-    's/(40.78 0.78) (200 0.78)/(40.78 2.78) (200 2.78)/' "(200 2.78)"
+    's/(40.78 0.78) (200 0.78)/(40.78 2.78) (200 2.78)/'
 then
     checkClose "U-channel lifted holder: final holder translation vs -2 mm" \
         "$(value "$c" holderPosition)" -2 0.05

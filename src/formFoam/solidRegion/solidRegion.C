@@ -535,6 +535,22 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
 
     readMaterial(subDictOf(properties_, "material", "{ type ...; E ...; }"));
 
+    // The region's mesh: constant/<solid>/polyMesh (OpenFOAM's own message
+    // would only name a missing "points" file)
+    const fileName meshDir =
+        runTime.path()/runTime.constant()/name/polyMesh::meshSubDir;
+    for (const word f : {"points", "faces", "owner", "neighbour", "boundary"})
+    {
+        if (!isFile(meshDir/f) && !isFile(meshDir/f + ".gz"))
+        {
+            FatalErrorInFunction
+                << "Solid region '" << name << "' has no mesh: "
+                << ("constant"/name/polyMesh::meshSubDir/f).c_str()
+                << " is missing; run blockMesh -region " << name.c_str()
+                << exit(FatalError);
+        }
+    }
+
     mesh_.reset
     (
         new fvMesh
