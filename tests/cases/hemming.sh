@@ -11,7 +11,8 @@
 #    1.15 mm beyond it (5 %: the bend's inner radius is at least
 #    t_inner/2);
 #  - the run against its recorded values (tests/cases/hemming.reference,
-#    with provenance): roll-in, gaps, tool forces, flange angles;
+#    with provenance; a regression check against our own code): roll-in,
+#    gaps, tool forces, flange angles;
 #  - the energy balance of the dynamic stages: the trapezoidal rule
 #    conserves it (the scheme's dissipation below 1e-6 of the work);
 #  - Newton cost is reported (iterations per step, most in a step).
@@ -26,9 +27,10 @@ if (cd "$c" && timeout 1800 ./Allrun > log.Allrun 2>&1) && [ -f "$c/postProcessi
     checkClose "flange turned 180 deg by final hemming" "$(summary flangeAngleHemmed)" 180 0.0056
     checkClose "closed hem: hem edge t_o + t_i/2 beyond the inner edge" "$(summary gapHemmed)" 1.15 0.05
     # Recorded run: name value relative-tolerance per line
+    [ -f "$here/hemming.reference" ] || fail "hemming.reference missing: its checks cannot run"
     while read -r name value tol; do
         case $name in ''|'#'*) continue ;; esac
-        checkClose "hemming $name vs recorded run" "$(summary "$name")" "$value" "$tol"
+        checkClose "hemming $name vs recorded run (regression, own code)" "$(summary "$name")" "$value" "$tol"
     done < "$here/hemming.reference"
     read -r wext diss < <(awk '!/^#/ { w = $4; d = $5 } END { print w, d }' "$c/postProcessing/energy.dat")
     checkBelow "hemming: energy dissipated by the trapezoidal rule / external work" \

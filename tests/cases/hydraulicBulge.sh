@@ -9,17 +9,20 @@
 #       neglects bending; measured 1 %);
 #    b. the fluid's volume: the volume swept by the blank's lower face
 #       (integrated from the nodes) equals (V0 + V_inj) exp(-p/K) - V0
-#       within 1e-4 (the nodes' trapezoidal rule against the exact
-#       quadratic edges);
+#       within 5e-5 (observed 2.2e-5: the nodes' trapezoidal rule against
+#       the exact quadratic edges);
 #    c. pole thickness at h = 30 mm between Hill (1950) t0/(1 + (h/a)^2)^2
 #       (a = 50: the thinnest estimate) and the uniform cap t0/(1 + (h/a)^2),
 #       and within 3 % of Hill with a + r_d = 55 (BENCHMARKS.md: estimates,
 #       a converged FE result lies near them, not on them);
 #    d. against the converged run of hydraulicBulge.reference (4x finer
-#       mesh, 2 elements through the thickness, half the step): p at
-#       h = 30, t at h = 30, p_max within 0.5 %;
+#       mesh, 2 elements through the thickness, half the step; a
+#       regression check against our own code): p at h = 30, t at h = 30,
+#       p_max within 0.15 %, 0.5 % and 0.1 % (observed 0.054 %, 0.21 %,
+#       0.024 %);
 #    e. volume control passes the pressure maximum (final p < 0.99 p_max);
-#       pressure control stops at it (its last p within 0.2 % of p_max);
+#       pressure control stops at it (its last p within 0.03 % of p_max;
+#       observed 0.009 %);
 #    f. Newton converges quadratically (observed order from the log);
 #       a restart from the middle of the run reproduces it (1e-10);
 #    g. the summary names the fluid model and the entries the issue asks.
@@ -71,7 +74,7 @@ if (cd "$c" && OMP_NUM_THREADS=1 timeout 1800 ./Allrun > log.Allrun 2>&1) \
         "$sM" "$sS" 0.03
     read -r swept expected < <(python3 "$here/bulgeCheck.py" "$c" volume)
     checkClose "bulge: volume swept by the blank vs the fluid's volume change" \
-        "$swept" "$expected" 1e-4
+        "$swept" "$expected" 5e-5
 
     t30=$(value "$c" poleThicknessAtPoleHeight30mm)
     checkBelow "bulge: pole thickness at 30 mm above Hill (a = 50, 0.5407)" 0.5407 "$t30"
@@ -79,8 +82,10 @@ if (cd "$c" && OMP_NUM_THREADS=1 timeout 1800 ./Allrun > log.Allrun 2>&1) \
     checkClose "bulge: pole thickness at 30 mm vs Hill (a + r_d = 55)" "$t30" \
         "$(awk 'BEGIN { printf "%.6g", 1/(1 + (30/55)^2)^2 }')" 0.03
 
-    for e in pressureAtPoleHeight30mm poleThicknessAtPoleHeight30mm maxPressure; do
-        checkClose "bulge: $e vs the converged run" "$(value "$c" $e)" "$(ref $e)" 0.005
+    for e in "pressureAtPoleHeight30mm 1.5e-3" "poleThicknessAtPoleHeight30mm 5e-3" "maxPressure 1e-3"; do
+        set -- $e
+        checkClose "bulge: $1 vs the converged 4x finer run (regression, own code)" \
+            "$(value "$c" $1)" "$(ref $1)" $2
     done
 
     pMax=$(value "$c" maxPressure)
@@ -89,7 +94,7 @@ if (cd "$c" && OMP_NUM_THREADS=1 timeout 1800 ./Allrun > log.Allrun 2>&1) \
     if [ -f "$c/pressureControl/postProcessing/history.dat" ] \
        && grep -q "no convergence for the step" "$c/pressureControl/log.formFoam"; then
         checkClose "bulge: pressure control stops at the maximum" \
-            "$(lastHistory "$c/pressureControl" pressure)" "$pMax" 0.002
+            "$(lastHistory "$c/pressureControl" pressure)" "$pMax" 3e-4
     else
         fail "bulge: the pressure-controlled run did not stop at the maximum"
     fi

@@ -1,3 +1,10 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    The linearSolver auto: CHOLMOD until its first indefinite factorisation,
+    UMFPACK from then on (autoSolver.H).
+\*---------------------------------------------------------------------------*/
 #include "autoSolver.H"
 #include "formError.H"
 

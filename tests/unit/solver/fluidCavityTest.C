@@ -138,3 +138,55 @@ TEST(fluidCavity, ClampedPlateUnderInjectedVolumeAgainstPlateTheory)
     // geometry: a few iterations)
     for (const stepReport& r : v.reports) EXPECT_LE(r.iterations, 4);
 }
+
+
+TEST(fluidCavity, IterationNoteNamesWhereTheLargestResidualSits)
+{
+    // The Newton log's note (solidModel::iterationNote): the residual norm
+    // per block and the unknown of the largest residual entry, a node and
+    // its component or a block's unknown by name
+    feMesh mesh = structuredQuadMesh
+    (
+        {{{0, 0}, {R, 0}, {R, t}, {0, t}}}, 4, 1, 9, "Q9P3", "steel"
+    );
+    solidModel model
+    (
+        mesh, analysisType::axisymmetric,
+        {{"steel", material::New("linearElastic", {{"E", E}, {"nu", nu}})}}
+    );
+    model.addConstraint(mesh.nodeSets.at("right"), 0);
+    model.addConstraint(mesh.nodeSets.at("right"), 1);
+    hydrostaticCavitySpec s;
+    s.faceSets = {"bottom"};
+    s.bulkModulus = 1e4;
+    s.initialVolume = V0;
+    s.injectedVolume = [](double) { return 0.0; };
+    s.referenceModulus = E;
+    auto cavity =
+        std::make_shared<hydrostaticCavity>(mesh, analysisType::axisymmetric, s);
+    model.addCoupledBlock(cavity);
+    model.finalise();
+    const int nFree = model.nFreeDofs();
+    ASSERT_EQ(model.nUnknowns(), nFree + 1);
+
+    // largest entry at a free nodal dof: the note names its node and
+    // component (r, z print as x, y: the solver's component order)
+    for (const int i : {3, nFree - 2})
+    {
+        vecX r = vecX::Constant(model.nUnknowns(), 1e-3);
+        r(i) = -7;
+        const int d = model.freeDofs()[i];
+        const std::string note = model.iterationNote(r);
+        const std::string where = "max at node " + std::to_string(d/2)
+          + (d % 2 ? " y" : " x");
+        EXPECT_NE(note.find(where), std::string::npos) << note << " (expected " << where << ")";
+        EXPECT_NE(note.find("|r_solid| 7.00e+00"), std::string::npos) << note;
+    }
+    // largest entry in the cavity's equation: its unknown by name
+    vecX r = vecX::Constant(model.nUnknowns(), 1e-3);
+    r(nFree) = 9;
+    const std::string note = model.iterationNote(r);
+    EXPECT_NE(note.find("max at " + cavity->unknownName(0)), std::string::npos)
+        << note << " (expected " << cavity->unknownName(0) << ")";
+    EXPECT_NE(note.find("9.00e+00"), std::string::npos) << note;
+}

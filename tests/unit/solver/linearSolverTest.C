@@ -3,6 +3,8 @@
 #include "linearSolver.H"
 #include "cholmodSolver.H"
 #include "umfpackSolver.H"
+#include "autoSolver.H"
+#include <sstream>
 #include "formError.H"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -143,6 +145,41 @@ TEST(linearSolver, CholmodThrowsOnIndefiniteMatrix)
     u->factorize(K);
     EXPECT_LT((u->solve(r) - denseSolve(K, r)).norm(),
         1e-8*denseSolve(K, r).norm());
+}
+
+
+TEST(linearSolver, AutoSwitchesToUmfpackAtTheFirstIndefiniteMatrix)
+{
+    // linearSolver auto (autoSolver.H): CHOLMOD while the tangent is
+    // positive definite, UMFPACK from the first indefinite one on, said
+    // once in the log, no solve lost
+    std::ostringstream log;
+    autoSolver s(&log);
+    const sparseMatrix spd = gridMatrix(8, 0.5, 0);
+    const sparseMatrix indefinite = gridMatrix(8, -2.1, 0);
+    const vecX r = rhs(int(spd.rows()));
+    s.analyzePattern(spd);
+    s.factorize(spd);
+    EXPECT_EQ(s.type(), "auto (cholmod)");
+    EXPECT_FALSE(s.switched());
+    EXPECT_LT((s.solve(r) - denseSolve(spd, r)).norm(), 1e-10*denseSolve(spd, r).norm());
+    EXPECT_TRUE(log.str().empty()) << log.str();
+
+    // the first indefinite matrix: factorised by UMFPACK at once
+    s.factorize(indefinite);
+    EXPECT_TRUE(s.switched());
+    EXPECT_EQ(s.type(), "auto (umfpack)");
+    EXPECT_LT((s.solve(r) - denseSolve(indefinite, r)).norm(), 1e-8*denseSolve(indefinite, r).norm());
+    EXPECT_NE(log.str().find("switching from cholmod to umfpack for the rest of the run"), std::string::npos) << log.str();
+
+    // the switch is permanent, and reported once
+    s.factorize(spd);
+    EXPECT_EQ(s.type(), "auto (umfpack)");
+    EXPECT_LT((s.solve(r) - denseSolve(spd, r)).norm(), 1e-10*denseSolve(spd, r).norm());
+    s.factorize(indefinite);
+    std::size_t n = 0;
+    for (std::size_t k = log.str().find("switching"); k != std::string::npos; k = log.str().find("switching", k + 1)) ++n;
+    EXPECT_EQ(n, 1u);
 }
 
 
