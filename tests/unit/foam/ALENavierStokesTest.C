@@ -96,6 +96,15 @@ double newtonMatrixError(Foam::ALENavierStokes& f, double t, double h)
     return err;
 }
 
+// Settings of a laminar fluid (incompressible, no mesh motion)
+Foam::ALEFluidSettings laminar(double rho, double mu)
+{
+    Foam::ALEFluidSettings s;
+    s.rho = rho;
+    s.mu = mu;
+    return s;
+}
+
 // A random state: velocities and pressures of order 1
 vecX randomState(int n, unsigned seed)
 {
@@ -117,9 +126,7 @@ TEST(ALENavierStokes, NewtonMatrixTransientCompressibleMovingMesh)
                        "Gauss linear corrected", channelU, channelP),
         "fluid"
     );
-    Foam::ALEFluidSettings set;
-    set.rho = 1.3;
-    set.mu = 0.1;
+    Foam::ALEFluidSettings set = laminar(1.3, 0.1);
     set.incompressible = false;
     set.bulkModulus = 50;
     set.meshMotion = "oscillating";
@@ -147,9 +154,7 @@ TEST(ALENavierStokes, NewtonMatrixSteadyIncompressibleUpwind)
                        "Gauss linear uncorrected", channelU, channelP),
         "fluid"
     );
-    Foam::ALEFluidSettings set;
-    set.rho = 1;
-    set.mu = 0.05;
+    Foam::ALEFluidSettings set = laminar(1, 0.05);
     Foam::ALENavierStokes f(c.runTime(), c.mesh(), set);
     ASSERT_TRUE(f.steady());
     const int n = f.nUnknowns();
@@ -194,9 +199,7 @@ TEST(ALENavierStokes, UniformFlowOnAMovingMeshStaysUniform)
                        "Gauss linear corrected", U, p),
         "fluid"
     );
-    Foam::ALEFluidSettings set;
-    set.rho = 1;
-    set.mu = 0.1;
+    Foam::ALEFluidSettings set = laminar(1, 0.1);
     set.meshMotion = "oscillating";
     set.amplitude = Foam::vector(0.1, 0.08, 0);
     set.period = 1;
@@ -252,9 +255,7 @@ TEST(ALENavierStokes, UniformPressureInAWedgeIsInEquilibrium)
                        "Gauss linear corrected", U, p),
         "fluid"
     );
-    Foam::ALEFluidSettings set;
-    set.rho = 1;
-    set.mu = 0.1;
+    Foam::ALEFluidSettings set = laminar(1, 0.1);
     Foam::ALENavierStokes f(c.runTime(), c.mesh(), set);
     f.commit(vecX());
     f.beginIncrement(0, 1, vecX());
