@@ -484,7 +484,8 @@ deformablePunch()
 {
     local np=$1 ptol=$2 ftol=$3 label=$4 c f n nClosed pMin pMax dev its steps
     c=$(newCase flatPunchDeformable)
-    sed -i "s/^nPunch .*/nPunch  $np;/" "$c/system/block/blockMeshDict"
+    # (the case as stored has nPunch 8: edit only another number)
+    [ "$np" = 8 ] || sed -i "s/^nPunch .*/nPunch  $np;/" "$c/system/block/blockMeshDict"
     if run "$c"; then
         f=$(contactFile "$c" 1 punchBlock)
         read -r n nClosed pMin pMax dev < <(awk -v p="$pD" '!/^#/ && NF >= 13 {
@@ -524,7 +525,8 @@ twoPass()
 {
     local np=$1 c F Fb its steps
     c=$(newCase flatPunchDeformable)
-    sed -i "s/^nPunch .*/nPunch  $np;/" "$c/system/block/blockMeshDict"
+    # (the case as stored has nPunch 8: edit only another number)
+    [ "$np" = 8 ] || sed -i "s/^nPunch .*/nPunch  $np;/" "$c/system/block/blockMeshDict"
     sed -i 's/^\( *punchBlock .*\)$/\1\n    blockPunch { patch blockTop; targetPatch punchBottom; friction 0; }/' \
         "$c/constant/contactProperties"
     if run "$c"; then

@@ -124,7 +124,7 @@ TEST(ALENavierStokes, NewtonMatrixTransientCompressibleMovingMesh)
     (
         fluidCaseFiles("fluid", skewedMesh, "Euler", "Gauss linear",
                        "Gauss linear corrected", channelU, channelP),
-        "fluid"
+        {"fluid"}
     );
     Foam::ALEFluidSettings set = laminar(1.3, 0.1);
     set.incompressible = false;
@@ -152,7 +152,7 @@ TEST(ALENavierStokes, NewtonMatrixSteadyIncompressibleUpwind)
     (
         fluidCaseFiles("fluid", skewedMesh, "steadyState", "Gauss upwind",
                        "Gauss linear uncorrected", channelU, channelP),
-        "fluid"
+        {"fluid"}
     );
     Foam::ALEFluidSettings set = laminar(1, 0.05);
     Foam::ALENavierStokes f(c.runTime(), c.mesh(), set);
@@ -197,7 +197,7 @@ TEST(ALENavierStokes, UniformFlowOnAMovingMeshStaysUniform)
     (
         fluidCaseFiles("fluid", box, "Euler", "Gauss linear",
                        "Gauss linear corrected", U, p),
-        "fluid"
+        {"fluid"}
     );
     Foam::ALEFluidSettings set = laminar(1, 0.1);
     set.meshMotion = "oscillating";
@@ -253,7 +253,7 @@ TEST(ALENavierStokes, UniformPressureInAWedgeIsInEquilibrium)
     (
         fluidCaseFiles("fluid", wedge, "steadyState", "Gauss linear",
                        "Gauss linear corrected", U, p),
-        "fluid"
+        {"fluid"}
     );
     Foam::ALEFluidSettings set = laminar(1, 0.1);
     Foam::ALENavierStokes f(c.runTime(), c.mesh(), set);

@@ -1,0 +1,196 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Operator-level tests of the fluid-solid interface (fluidSolidInterface.H)
+    on a scratch case of two regions whose meshes do not match on the
+    interface (3 fluid faces on 2 solid Q9 edges):
+    - the interpolations of the interface's points and face centres on the
+      solid's edges are partitions of unity (sum_a N_a = 1) with no gap;
+    - the interface points follow a solid displacement quadratic along the
+      edge exactly (eq. 1: the Q9 edge is quadratic), the fixed walls stay
+      and the interior follows by the harmonic extension, between them;
+    - the fluid's total force reaches the solid exactly, and the power the
+      fluid exerts on the wall (interface face velocities, eq. 2, times the
+      face forces) is the power the solid receives (nodal velocities times
+      the nodal forces, eq. 3).
+\*---------------------------------------------------------------------------*/
+#include "fluidSolidInterface.H"
+#include "polyMeshToFeMesh.H"
+#include "scratchCase.H"
+#include <gtest/gtest.h>
+#include <algorithm>
+#include <random>
+#include <sstream>
+
+using namespace form;
+using namespace form::test;
+
+namespace
+{
+
+std::string box
+(
+    double y0, double y1, int nx, int ny,
+    const std::string& bottom, const std::string& top, const std::string& sides
+)
+{
+    std::ostringstream os;
+    os  << "vertices ((0 " << y0 << " 0) (1 " << y0 << " 0) (1 " << y1
+        << " 0) (0 " << y1 << " 0) (0 " << y0 << " 0.1) (1 " << y0
+        << " 0.1) (1 " << y1 << " 0.1) (0 " << y1 << " 0.1));\n"
+        << "blocks (hex (0 1 2 3 4 5 6 7) (" << nx << ' ' << ny
+        << " 1) simpleGrading (1 1 1));\n"
+        << "boundary (\n " << bottom << " { type wall; faces ((0 1 5 4)); }\n "
+        << top << " { type wall; faces ((3 7 6 2)); }\n "
+        << sides << " { type wall; faces ((0 4 7 3) (1 2 6 5)); }\n"
+        << " frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }\n);\n";
+    return os.str();
+}
+
+// The fluid (3 x 3 cells above y = 0, wetted patch 'wet') and the solid
+// (2 x 1 Q9 below it, wetted face set 'top')
+std::map<std::string, std::string> interfaceCase()
+{
+    const std::string schemes = foamHeader("dictionary", "fvSchemes")
+        + "ddtSchemes { default steadyState; } gradSchemes { default Gauss linear; }"
+          " divSchemes { default none; } laplacianSchemes { default Gauss linear corrected; }"
+          " interpolationSchemes { default linear; } snGradSchemes { default corrected; }\n";
+    const std::string solution = foamHeader("dictionary", "fvSolution");
+    return
+    {
+        {"system/controlDict", foamHeader("dictionary", "controlDict")
+            + "application formFoam; startFrom startTime; startTime 0;"
+              " stopAt endTime; endTime 1; deltaT 1;"
+              " writeControl timeStep; writeInterval 1;\n"},
+        {"system/fluid/blockMeshDict", foamHeader("dictionary", "blockMeshDict")
+            + box(0, 1, 3, 3, "wet", "top", "walls")},
+        {"system/solid/blockMeshDict", foamHeader("dictionary", "blockMeshDict")
+            + box(-0.2, 0, 2, 1, "bottom", "top", "sides")},
+        {"system/fluid/fvSchemes", schemes},
+        {"system/fluid/fvSolution", solution},
+        {"system/solid/fvSchemes", schemes},
+        {"system/solid/fvSolution", solution}
+    };
+}
+
+struct interfaceFixture
+{
+    scratchCase c{interfaceCase(), {"fluid", "solid"}};
+    Foam::polyMeshToFeMesh solid{c.mesh("solid"), 9, "Q9P3", "steel"};
+    Foam::fvMesh& fluid = c.mesh("fluid");
+    Foam::pointField points0{fluid.points()};
+    Foam::fluidSolidInterface itf
+    {
+        fluid, points0, {"wet"}, solid, {"top"}, {}, "fluidProperties"
+    };
+};
+
+std::string at(const Foam::point& p)
+{
+    return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ")";
+}
+
+double sum(const std::vector<double>& v)
+{
+    double s = 0;
+    for (const double x : v) s += x;
+    return s;
+}
+
+} // namespace
+
+
+TEST(fluidSolidInterface, InterpolationsArePartitionsOfUnity)
+{
+    interfaceFixture f;
+    ASSERT_EQ(f.itf.faces().size(), 3);
+    ASSERT_EQ(f.itf.nPoints(), 4);
+    for (const auto& p : f.itf.faceInterpolation())
+    {
+        EXPECT_NEAR(sum(p.N), 1, 1e-14);
+        EXPECT_LT(p.gap, 1e-12);
+    }
+    for (const auto& p : f.itf.pointInterpolation())
+    {
+        EXPECT_NEAR(sum(p.N), 1, 1e-14);
+        EXPECT_LT(p.gap, 1e-12);
+    }
+}
+
+
+TEST(fluidSolidInterface, MeshFollowsAQuadraticDisplacementExactly)
+{
+    interfaceFixture f;
+    const matX& X = f.solid.feMesh().X;
+    const auto ux = [](double x) { return 0.01*(x*x - 0.3*x); };
+    const auto uy = [](double x) { return 0.02*(1 + x - x*x); };
+    vecX U(2*X.rows());
+    for (int a = 0; a < X.rows(); ++a)
+    {
+        U(2*a) = ux(X(a, 0));
+        U(2*a + 1) = uy(X(a, 0));
+    }
+    const Foam::pointField moved(f.itf.points(U));
+    int onInterface = 0, onWalls = 0, inside = 0;
+    for (Foam::label p = 0; p < moved.size(); ++p)
+    {
+        const Foam::point& x0 = f.points0[p];
+        const Foam::vector d = moved[p] - x0;
+        if (x0.y() < 1e-12)
+        {
+            ++onInterface;
+            EXPECT_NEAR(d.x(), ux(x0.x()), 1e-15) << "point " << at(x0);
+            EXPECT_NEAR(d.y(), uy(x0.x()), 1e-15) << "point " << at(x0);
+        }
+        else if (x0.x() < 1e-12 || x0.x() > 1 - 1e-12 || x0.y() > 1 - 1e-12)
+        {
+            ++onWalls;
+            EXPECT_EQ(Foam::mag(d), 0) << "point " << at(x0);
+        }
+        else
+        {
+            ++inside;
+            // harmonic: between the walls' 0 and the interface's values
+            EXPECT_GT(d.y(), 0) << "point " << at(x0);
+            EXPECT_LT(d.y(), 0.02*1.25) << "point " << at(x0);
+        }
+        EXPECT_EQ(d.z(), 0);
+    }
+    EXPECT_EQ(onInterface, 8);      // 4 in-plane points, front and back
+    EXPECT_EQ(inside, 8);
+    EXPECT_EQ(onWalls, 16);
+}
+
+
+TEST(fluidSolidInterface, ForcesAndPowerReachTheSolidExactly)
+{
+    interfaceFixture f;
+    const int nDofs = 2*int(f.solid.feMesh().X.rows());
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    Foam::vectorField F(f.itf.faces().size());
+    for (Foam::vector& v : F) v = Foam::vector(uni(rng), uni(rng), 0);
+    vecX v(nDofs);
+    for (int i = 0; i < nDofs; ++i) v(i) = uni(rng);
+
+    vecX fn = vecX::Zero(nDofs);
+    f.itf.addForces(F, 1, fn);
+    const Foam::vector total = Foam::sum(F);
+    EXPECT_NEAR(fn(Eigen::seq(0, nDofs - 1, 2)).sum(), total.x(), 1e-14);
+    EXPECT_NEAR(fn(Eigen::seq(1, nDofs - 1, 2)).sum(), total.y(), 1e-14);
+
+    const Foam::vectorField uf(f.itf.faceVelocities(v));
+    double fluidPower = 0;
+    forAll(uf, j) fluidPower += uf[j] & F[j];
+    EXPECT_NEAR(v.dot(fn), fluidPower, 1e-14*(1 + std::abs(fluidPower)));
+    // nodes off the interface receive nothing
+    for (int d = 0; d < nDofs; ++d)
+    {
+        const auto dofs = f.itf.dofs();
+        if (std::find(dofs.begin(), dofs.end(), d) == dofs.end())
+        {
+            EXPECT_EQ(fn(d), 0) << "dof " << d;
+        }
+    }
+}
