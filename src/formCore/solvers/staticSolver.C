@@ -121,6 +121,7 @@ vecX staticSolver::solveLinear(const vecX& rhs)
         patternAnalysed_ = true;
         analysedRevision_ = model_.patternRevision();
     }
+    ++times.factorisations;
     try
     {
         solver_.factorize(model_.K());

@@ -868,6 +868,7 @@ void Foam::formScene::run()
         << " (part of fluid)" << nl
         << "    factorisation   " << t.factorisation << nl
         << "    solve           " << t.solve << nl
+        << "    factorisations  " << t.factorisations << " (count)" << nl
         << "    output          " << t.output << nl
         << "    total (wall)    " << wallTime << nl
         << "    steps " << totals_.steps << ", Newton iterations "
