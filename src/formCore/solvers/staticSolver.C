@@ -144,6 +144,19 @@ vecX staticSolver::solveLinear(const vecX& rhs)
 }
 
 
+vecX staticSolver::solveAgain(const vecX& rhs)
+{
+    const auto start = std::chrono::steady_clock::now();
+    vecX dU = solver_.solve(rhs);
+    model_.times().solve += secondsSince(start);
+    if (!dU.allFinite())
+    {
+        throw stepFailure("linear solve returned non-finite values");
+    }
+    return dU;
+}
+
+
 // FEP sec. 8.4.2: find beta with |dU . r(U0 + beta dU)| <= tol |dU . r(U0)|
 // by regula falsi with the Illinois modification on the bracket [0, 1]
 // (the full step is tried first). A failed evaluation (inverted element,
@@ -543,6 +556,28 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
                 rNorm <= newton_.forceTolerance*ref
              && (nearEquilibrium || energyRatio <= newton_.energyTolerance)
             );
+        // The first iteration meets the force criterion: the energy of
+        // the next update from the factors at hand decides (header)
+        if
+        (
+            !converged && i == 1 && !nearEquilibrium && energy1 > 0
+         && rNorm <= newton_.forceTolerance*ref
+        )
+        {
+            const double next = std::abs(solveAgain(r).dot(r))/energy1;
+            if (next <= newton_.energyTolerance)
+            {
+                std::snprintf
+                (
+                    line, sizeof(line),
+                    "    energy of the next update (factors of iteration 1)"
+                    " %.3e <= energyTolerance: converged\n", next
+                );
+                log_<< line;
+                model_.setForceLevel(ref);
+                return true;
+            }
+        }
         // Round-off floor: the energy criterion holds, the residual no
         // longer decreases and is small. Nearly incompressible materials
         // put this floor (~ eps kappa |Omega|, independent of the load)
