@@ -67,6 +67,26 @@ TEST(cooksMembrane, Q9P3LinearWithinFiveHundredthsOfAPercent)
 }
 
 
+TEST(cooksMembrane, LinearProblemTakesOneFactorisation)
+{
+    // staticSolver.H: the first iteration meets the force criterion and
+    // the energy of the next update, from the factors at hand, decides
+    double E, nu;
+    lameToEnu(7500, 0.375, E, nu);
+    cooksMembrane c("Q9P3", 16, "linearElastic", E, nu, 1.0/16);
+    auto solver = linearSolver::New("cholmod");
+    stepControls sc;
+    sc.deltaT = 1;
+    std::ostringstream log;
+    staticSolver s(*c.model, *solver, {}, sc, log);
+    s.run(nullptr);
+    EXPECT_EQ(s.totalIterations(), 1) << log.str();
+    EXPECT_EQ(c.model->times().factorisations, 1);
+    EXPECT_NE(log.str().find("energy of the next update"), std::string::npos) << log.str();
+    EXPECT_NEAR(c.v(), 16.4326, 5e-4*16.4326);
+}
+
+
 TEST(cooksMembrane, Q4LinearLocks)
 {
     const double v = linearCook("Q4", 16);
