@@ -1,3 +1,10 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of sparsityPattern.H: Equation numbering and the fixed
+    sparse structure of the Newton matrices.
+\*---------------------------------------------------------------------------*/
 #include "sparsityPattern.H"
 #include "formError.H"
 #include <algorithm>

@@ -1,3 +1,10 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of formTypes.H: the basic types of formCore, the
+    finite-element kernel library.
+\*---------------------------------------------------------------------------*/
 #include "formTypes.H"
 #include "formError.H"
 

@@ -1,3 +1,11 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of gaussLegendre.H: Gauss-Legendre quadrature on [-1, 1]
+    with n = 1..5 points (exact for polynomials of degree 2n - 1) and its
+    tensor product on [-1, 1]^2.
+\*---------------------------------------------------------------------------*/
 #include "gaussLegendre.H"
 #include <cmath>
 #include <stdexcept>

@@ -1,3 +1,10 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of quadShape.H: Lagrange shape functions on the reference
+    square [-1, 1]^2 in VTK node order (VTK_QUAD, VTK_BIQUADRATIC_QUAD).
+\*---------------------------------------------------------------------------*/
 #include "quadShape.H"
 #include <stdexcept>
 

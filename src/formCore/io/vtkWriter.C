@@ -1,3 +1,12 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of vtkWriter.H: Writes the solid mesh and results as VTK
+    XML unstructured grids (.vtu) with true higher-order cells
+    (VTK_BIQUADRATIC_QUAD for 9-node elements, VTK_QUAD for 4-node ones) and
+    a .pvd collection that ParaView opens as a time series.
+\*---------------------------------------------------------------------------*/
 #include "vtkWriter.H"
 #include "formError.H"
 #include <cmath>

@@ -1,3 +1,13 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of cholmodSolver.H: Supernodal sparse Cholesky
+    factorisation K = L L^T (SuiteSparse CHOLMOD through
+    Eigen::CholmodSupernodalLLT) with the METIS nested-dissection ordering
+    forced (one ordering method, no AMD fall-back), so that the fill is
+    predictable for the large 2D/3D meshes of forming problems.
+\*---------------------------------------------------------------------------*/
 #include "cholmodSolver.H"
 #include "formError.H"
 #include <Eigen/CholmodSupport>

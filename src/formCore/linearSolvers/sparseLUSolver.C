@@ -1,3 +1,10 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of sparseLUSolver.H: Eigen's SparseLU with COLAMD
+    ordering.
+\*---------------------------------------------------------------------------*/
 #include "sparseLUSolver.H"
 #include "formError.H"
 #include <Eigen/SparseLU>

@@ -1,3 +1,12 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of umfpackSolver.H: Sparse LU factorisation P R K Q = L U
+    (SuiteSparse UMFPACK through Eigen::UmfPackLU) with the METIS column
+    ordering, or AMD (UMFPACK's default) if a row or column of K has more
+    than 10 sqrt(n) entries.
+\*---------------------------------------------------------------------------*/
 #include "umfpackSolver.H"
 #include "formError.H"
 #include <Eigen/UmfPackSupport>

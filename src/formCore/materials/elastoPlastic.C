@@ -1,3 +1,10 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of elastoPlastic.H: Finite-strain elasto-plasticity for
+    sheet metal with logarithmic (Hencky) strains.
+\*---------------------------------------------------------------------------*/
 #include "elastoPlastic.H"
 #include "logStrain.H"
 #include <cmath>

@@ -1,3 +1,10 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of linearElastic.H: Isotropic small-strain linear
+    elasticity (Hooke's law).
+\*---------------------------------------------------------------------------*/
 #include "linearElastic.H"
 
 namespace form

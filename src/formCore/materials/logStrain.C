@@ -1,3 +1,11 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of logStrain.H: the geometric pre- and post-processor of
+    finite-strain plasticity in logarithmic strain space (Miehe, Apel &
+    Lambrecht, CMAME 191 (2002) 5383-5425).
+\*---------------------------------------------------------------------------*/
 #include "logStrain.H"
 #include "formError.H"
 #include <cmath>

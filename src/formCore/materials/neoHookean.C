@@ -1,3 +1,11 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of neoHookean.H: compressible neo-Hookean
+    hyperelasticity with the isochoric/volumetric split (Simo & Hughes,
+    Computational Inelasticity, 1998).
+\*---------------------------------------------------------------------------*/
 #include "neoHookean.H"
 #include <cmath>
 

@@ -1,3 +1,13 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of pointLocator.H: finds the element of a 2D quad mesh
+    (4- or 9-node, VTK ordering) that contains a reference point, its natural
+    coordinates (r, s) by Newton inversion of the bilinear corner map, and
+    interpolates nodal fields there with the element's Lagrange shape
+    functions.
+\*---------------------------------------------------------------------------*/
 #include "pointLocator.H"
 #include <cmath>
 

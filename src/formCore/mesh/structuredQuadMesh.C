@@ -1,3 +1,12 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of structuredQuadMesh.H: Structured nx x ny mesh of 4- or
+    9-node quads (VTK node order) on the bilinear patch x(xi, eta) =
+    (1-xi)(1-eta) c0 + xi (1-eta) c1 + xi eta c2 + (1-xi) eta c3 of the unit
+    square, corners counter-clockwise.
+\*---------------------------------------------------------------------------*/
 #include "structuredQuadMesh.H"
 #include "formError.H"
 

@@ -1,3 +1,9 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of formScene.H: A case as a scene.
+\*---------------------------------------------------------------------------*/
 #include "formScene.H"
 #include "blockTangentCheck.H"
 #include "dictionaryChecks.H"

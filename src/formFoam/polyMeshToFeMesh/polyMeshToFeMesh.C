@@ -1,3 +1,10 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of polyMeshToFeMesh.H: Upgrades a one-cell-thick 2D
+    OpenFOAM polyMesh (from blockMesh) to a finite-element quad mesh.
+\*---------------------------------------------------------------------------*/
 #include "polyMeshToFeMesh.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"

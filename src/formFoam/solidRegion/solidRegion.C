@@ -1,3 +1,9 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of solidRegion.H: One solid region of a case.
+\*---------------------------------------------------------------------------*/
 #include "solidRegion.H"
 #include "contactModel.H"
 #include "dictionaryChecks.H"
