@@ -45,7 +45,7 @@ passIf()
     # a value that is not a number (missing data) fails
     for a in "$@"; do
         [ "$a" = -v ] && continue
-        [[ ${a#*=} =~ ^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$ ]] || { fail "$bad"; return; }
+        isNumber "${a#*=}" || { fail "$bad"; return; }
     done
     if awk "$@" "BEGIN { exit !($cond) }"; then pass "$ok"; else fail "$bad"; fi
 }
