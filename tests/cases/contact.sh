@@ -120,7 +120,7 @@ newCase()
 # run <case>: mesh + solve; non-zero exit on failure
 run() { (cd "$1" && blockMesh -region block > log.blockMesh 2>&1 && formFoam > log.formFoam 2>&1); }
 # summary <case> <entry>: full precision (foamDictionary -value prints 6 digits)
-summary() { awk -v e="$2" '$1 == e { sub(/;$/, "", $2); print $2 }' "$1/postProcessing/summary"; }
+summary() { summaryValue "$1" "$2"; }
 # contactFile <case> <time> <pair>
 contactFile() { echo "$1/postProcessing/contact/$2/$3.dat"; }
 keepOrRemove() { [ -n "${KEEP:-}" ] && echo "    kept $*" || rm -rf "$@"; }

@@ -35,7 +35,7 @@
 . "$(dirname "$0")/testFunctions"
 here=$(cd "$(dirname "$0")" && pwd)
 
-value() { awk -v e="$2" '$1 == e { sub(/;$/, "", $2); print $2 }' "$1/postProcessing/summary"; }
+value() { summaryValue "$1" "$2"; }
 ref() { awk -v e="$1" '$1 == e { print $2 }' "$here/hydraulicBulge.reference"; }
 # lastHistory <case> <column>: the last converged step's value
 lastHistory()

@@ -26,7 +26,7 @@
 here=$(cd "$(dirname "$0")" && pwd)
 
 # value <case> <entry>: full precision from postProcessing/summary
-value() { awk -v e="$2" '$1 == e { sub(/;$/, "", $2); print $2 }' "$1/postProcessing/summary"; }
+value() { summaryValue "$1" "$2"; }
 # ref <entry>: recorded reference value
 ref() { awk -v e="$1" '$1 == e { print $2 }' "$here/uChannel.reference"; }
 # stroke <case> <mm>: forming to the given punch travel only (time scaled)
