@@ -84,6 +84,31 @@ struct contactModel::impl
     double tCommitted = 0;
     int nClosed = 0;
 
+    //- The friction constraint of one node (constraintFunctions.H) in the
+    //  slip rate s; dvds already chained to d/d(slip) (ds/dslip = A/dt).
+    //  alartCurnier: trial force tau - r s with r = rho dt/A, so that r s
+    //  is rho times the slip of the step (rho: frictionAugmentation)
+    frictionConstraint frictionLaw
+    (
+        double s,
+        double tau,
+        double lambda,
+        double mu,
+        double dt
+    ) const
+    {
+        const double eT = epsT > 0 ? epsT : std::pow(1e-4*spacing, 2);
+        frictionConstraint c =
+            controls.frictionLaw == "alartCurnier"
+          ? alartCurnierFrictionFunction
+            (
+                s, tau, lambda, mu, eT, controls.frictionAugmentation*dt/rateA
+            )
+          : frictionConstraintFunction(s, tau, lambda, mu, eT);
+        c.dvds *= rateA/dt;
+        return c;
+    }
+
     int findTool(const std::string& name) const
     {
         for (std::size_t i = 0; i < tools.size(); ++i)
@@ -366,6 +391,32 @@ contactModel::contactModel
     );
     check("epsilonT", controls.epsilonT, HUGE_VAL, "");
     check("stiffness", controls.stiffness, HUGE_VAL, "");
+    if
+    (
+        controls.frictionLaw != "regularised"
+     && controls.frictionLaw != "alartCurnier"
+    )
+    {
+        throw inputError
+        (
+            "frictionLaw",
+            "unknown friction law '" + controls.frictionLaw
+          + "'; valid: regularised alartCurnier"
+        );
+    }
+    if
+    (
+        !std::isfinite(controls.frictionAugmentation)
+     || !(controls.frictionAugmentation > 0)
+    )
+    {
+        throw inputError
+        (
+            "frictionAugmentation",
+            "out of range: " + number(controls.frictionAugmentation)
+          + " (valid: a positive number)"
+        );
+    }
     // Automatic split of the regularised law g f = epsN k = 1e-10 E l^2:
     // the knee of w at a pressure of about 1e-7 E (contactModel.H)
     m.k = controls.stiffness > 0 ? controls.stiffness : 1e-4*modulus*depth;
@@ -652,12 +703,7 @@ void contactModel::impl::evaluateDeformable
             }
             const double slip = tv.dot(delta);
             p.rate[a] = (rateA*slip + rateB*p.lastSlip[a])/dt;
-            fc = frictionConstraintFunction
-            (
-                p.rate[a], tau, lambda, p.mu,
-                epsT > 0 ? epsT : std::pow(1e-4*spacing, 2)
-            );
-            fc.dvds *= rateA/dt;
+            fc = frictionLaw(p.rate[a], tau, lambda, p.mu, dt);
             r(it) = k*fc.v;
             if (K)
             {
@@ -814,12 +860,7 @@ void contactModel::evaluate
                         m.rateA*(P.xi - p.xiCommitted[a])
                       + m.rateB*p.lastSlip[a]
                     )/dt;
-                fc = frictionConstraintFunction
-                (
-                    p.rate[a], tau, lambda, p.mu,
-                    m.epsT > 0 ? m.epsT : std::pow(1e-4*m.spacing, 2)
-                );
-                fc.dvds *= m.rateA/dt;
+                fc = m.frictionLaw(p.rate[a], tau, lambda, p.mu, dt);
                 r(it) = k*fc.v;
             }
             if (!K) continue;
@@ -1149,6 +1190,13 @@ std::string contactModel::describe() const
     s += "k " + formatNumber(m.k) + ", sqrt(epsN) "
       + formatNumber(std::sqrt(m.epsN)) + ", sqrt(epsT) "
       + (m.epsT > 0 ? formatNumber(std::sqrt(m.epsT)) : "auto (1 % of tool speed)")
+      + ", friction law " + m.controls.frictionLaw
+      + (
+            m.controls.frictionLaw == "alartCurnier"
+          ? " (augmentation " + formatNumber(m.controls.frictionAugmentation)
+          + ")"
+          : std::string()
+        )
       + ", unknowns "
       + std::to_string(m.x.size());
     return s;

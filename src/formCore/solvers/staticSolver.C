@@ -480,6 +480,15 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         return true;
     }
 
+    // The step's own scale in the force reference: the first right-hand
+    // side, unless it belongs to a predicted state. A prediction that is
+    // off in a stiff direction (nearly incompressible material: the
+    // extrapolated displacements violate the constraint at second order
+    // in the step, times the bulk modulus) has a residual far above the
+    // load level; it must not loosen the tolerance. It is then capped by
+    // the level under which the last step was accepted.
+    const double stepRef = predicted ? std::min(r0, model_.forceLevel()) : r0;
+
     double energy1 = 0;
     double rPrevNorm = r0;
     for (int i = 1; i <= newton_.maxIterations; ++i)
@@ -523,7 +532,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         const double rNorm = r.norm();
         const double ref = std::max
         (
-            {model_.externalForceNorm(), model_.reactionNorm(), r0}
+            {model_.externalForceNorm(), model_.reactionNorm(), stepRef}
         );
         const double rRel = ref > 0 ? rNorm/ref : rNorm;
         const double dUNorm = beta*dU.norm();

@@ -462,11 +462,9 @@ Foam::formScene::formScene(Time& runTime)
     newton_.residualLineSearch =
         lineSearchType_ == "residual"
      || (lineSearchType_ == "auto" && (contact_ || fluid_));
-    // auto: extrapolate the last increment when tools move over the body
-    // or fluid is injected
-    newton_.extrapolate =
-        predictor_ == "extrapolate" || predictor_ == "quadratic"
-     || (predictor_ == "auto" && (contact_ || fluid_));
+    // auto: extrapolate the last increment (staticSolver.H; the
+    // benchmark tests/benchmarks/newtonEfficiency shows what it saves)
+    newton_.extrapolate = predictor_ != "none";
     newton_.quadratic = predictor_ == "quadratic";
 
     // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching

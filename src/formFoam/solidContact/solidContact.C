@@ -220,7 +220,7 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
     (
         dict_,
         {"tools", "pairs", "epsilonN", "epsilonT", "stiffness",
-         "maxStatusChanges"}
+         "maxStatusChanges", "frictionLaw", "frictionAugmentation"}
     );
     if (solid_.analysis() == form::analysisType::solid3D)
     {
@@ -324,6 +324,10 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
     controls.epsilonN = dict_.getOrDefault<scalar>("epsilonN", 0);
     controls.epsilonT = dict_.getOrDefault<scalar>("epsilonT", 0);
     controls.stiffness = dict_.getOrDefault<scalar>("stiffness", 0);
+    controls.frictionLaw =
+        dict_.getOrDefault<word>("frictionLaw", "regularised");
+    controls.frictionAugmentation =
+        dict_.getOrDefault<scalar>("frictionAugmentation", 1);
     controls.maxStatusChanges =
         dict_.getOrDefault<label>("maxStatusChanges", 8);
     if (controls.maxStatusChanges < 1)

@@ -93,6 +93,78 @@ TEST(constraintFunctions, frictionLimitsAndDerivatives)
 }
 
 
+// The smoothed Alart-Curnier function (constraintFunctions.H): its zero
+// set is Coulomb's law (stick s = 0 inside the cone, tau = -mu lambda
+// sign(s) outside), and its derivatives match central differences at
+// stick, slip, the two transitions (trial force at the cone's edge), the
+// knee of the normal law (lambda -> 0) and out of contact
+TEST(constraintFunctions, alartCurnierBranchesAndDerivatives)
+{
+    const double mu = 0.2, lambda = 3, m = mu*lambda, epsT = 1e-8, r = 0.5;
+    const auto v = [&](double s, double tau, double l, double eT = 1e-8)
+    {
+        return alartCurnierFrictionFunction(s, tau, l, mu, eT, r).v;
+    };
+    // Stick: inside the cone v = r s to the rounding, e/4 (1/(m + x) -
+    // 1/(m - x)) with e = r^2 epsT (7e-10 here)
+    EXPECT_NEAR(v(0, 0.3*m, lambda), 0, 1e-9);
+    EXPECT_NEAR(v(1e-3, 0.3*m, lambda), r*1e-3, 1e-8);
+    // Slip: tau = -mu lambda sign(s) whatever tau's trial
+    EXPECT_NEAR(v(0.1, -m, lambda), 0, 1e-6*m);
+    EXPECT_NEAR(v(-0.1, m, lambda), 0, 1e-6*m);
+    EXPECT_NEAR(v(2, 0, lambda), m, 1e-6*m);
+    EXPECT_NEAR(v(0.1, 0, lambda), r*0.1, 1e-8);   // trial in the cone
+    // Out of contact: v = tau, v_tau = 1
+    EXPECT_EQ(v(0.1, 0.25, 0), 0.25);
+    EXPECT_EQ(alartCurnierFrictionFunction(0.1, 0.25, 0, mu, epsT, r).dvdtau, 1);
+    // A sliding iterate whose slip reverses is classified as stick (the
+    // reason for the law): v_s = r there, not ~0 as in the regularised law
+    const frictionConstraint reversed =
+        alartCurnierFrictionFunction(-0.2*m/r, -m, lambda, mu, epsT, r);
+    EXPECT_NEAR(reversed.dvds, r, 1e-6*r);
+    EXPECT_LT(frictionConstraintFunction(0.1, -m, lambda, mu, epsT).dvds, 1e-5);
+    // A sharp rounding keeps the zero set exact to round-off
+    EXPECT_NEAR(v(0.1, -m, lambda, 1e-24), 0, 1e-15);
+
+    // Derivatives: random points near each branch and transition
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double w = r*std::sqrt(epsT);   // rounding width in trial force
+    struct sample { double s, tau, l; };
+    std::vector<sample> samples;
+    for (int k = 0; k < 60; ++k)
+    {
+        const double l = lambda*(1 + 0.5*u(gen));
+        const double mk = mu*l;
+        const double tau = mk*u(gen);
+        // stick (x well inside), slip (x far outside), both edges
+        samples.push_back({0.3*mk*u(gen)/r, tau, l});
+        samples.push_back({(tau + mk*(2 + u(gen)))/r, tau, l});
+        samples.push_back({(tau - mk + 3*w*u(gen))/r, tau, l});
+        samples.push_back({(tau + mk + 3*w*u(gen))/r, tau, l});
+        // the knee: lambda of the rounding's size
+        samples.push_back({3*w*u(gen)/r, 3*w*u(gen), w*std::abs(u(gen))/mu});
+    }
+    for (const sample& p : samples)
+    {
+        const frictionConstraint c =
+            alartCurnierFrictionFunction(p.s, p.tau, p.l, mu, epsT, r);
+        const double hs = 1e-4*w/r, ht = 1e-4*w, hl = 1e-4*w/mu;
+        const double ds = (v(p.s + hs, p.tau, p.l) - v(p.s - hs, p.tau, p.l))/(2*hs);
+        const double dt = (v(p.s, p.tau + ht, p.l) - v(p.s, p.tau - ht, p.l))/(2*ht);
+        const double dl = (v(p.s, p.tau, p.l + hl) - v(p.s, p.tau, p.l - hl))/(2*hl);
+        EXPECT_TRUE(test::fdError("alartCurnier v_s", std::abs(c.dvds - ds)/r, 1e-6))
+            << "s " << p.s << " tau " << p.tau << " lambda " << p.l;
+        EXPECT_TRUE(test::fdError("alartCurnier v_tau", std::abs(c.dvdtau - dt), 1e-6))
+            << "s " << p.s << " tau " << p.tau << " lambda " << p.l;
+        EXPECT_TRUE(test::fdError("alartCurnier v_lambda", std::abs(c.dvdl - dl)/mu, 1e-6))
+            << "s " << p.s << " tau " << p.tau << " lambda " << p.l;
+        EXPECT_GE(c.dvdtau, 0);
+        EXPECT_GE(c.dvds, 0);
+    }
+}
+
+
 //- A 9-node 3 x 1 strip under a filleted punch; pair "top"
 struct contactSetup
 {
