@@ -53,11 +53,14 @@
 #    dead traction 100 on the top: N = 200 (tests/cases/slidingBlock).
 #    Coulomb's law (e.g. Johnson 1985, sec. 7.1; Wriggers, Computational
 #    Contact Mechanics, 2nd ed. 2006, sec. 5.2): |F_t| <= mu N, and
-#    F_t = mu N = 60 when the whole contact slides. The smooth Coulomb
-#    function tau = -mu lambda s/sqrt(s^2 + epsT) (s: sliding velocity,
-#    slip over a step / deltaT) carries mu lambda (1 - O(epsT/s^2)); the
-#    case sets sqrt(epsT) = 1e-6 per unit time, 1/1000 of the slowest push
-#    (2.5e-5 per step of 0.025).
+#    F_t = mu N = 60 when the whole contact slides. The default law
+#    (alartCurnier, constraintFunctions.H) carries mu lambda in sliding to
+#    O(epsT/(r s)) and lets a sticking node creep at O(r epsT/(mu lambda));
+#    the case sets sqrt(epsT) = 1e-6 per unit time, 1/1000 of the slowest
+#    push (2.5e-5 per step of 0.025). (d) repeats (a) and (b) with the
+#    regularised law tau = -mu lambda s/sqrt(s^2 + epsT) (s: sliding
+#    velocity, slip over a step / deltaT), which carries mu lambda (1 -
+#    O(epsT/s^2)) and lets a sticking node creep at up to a few sqrt(epsT).
 #    (a) the left face pushed far (0.01) in x: friction force = mu N
 #        within 0.5 % (toolForce; also = the sum of the nodal tangential
 #        forces, 1e-8). In the last steps (steady
@@ -72,7 +75,8 @@
 #        - r^2) per step (r = |shear|/(mu pressure) < 1; r <= 0.94 here),
 #        so the bound is 10 sqrt(epsT) per step over the 4 pull steps,
 #        i.e. 2e-5 of the block length (sliding would be macroscopic: the
-#        block has no other support in x).
+#        block has no other support in x); the Alart-Curnier law creeps far
+#        less: bound 1e-8 of the length.
 #    (c) the push of (a) in steps of 2.5e-5 through the transition: in the
 #        first step where the bottom-right node (whose x displacement is
 #        its slip: the ground is fixed) slips by more than half the push
@@ -356,9 +360,14 @@ else
 fi
 keepOrRemove "$c"
 
-# (b) sticking: press, then release the left face and pull it with T = 40
+# (b) sticking: press, then release the left face and pull it with T = 40;
+# stickingBlock <law> <movement bound / length> <restart: yes|no>
+stickingBlock()
+{
+local law=$1 bound=$2 restart=$3
 c=$(newCase slidingBlock)
 T=40
+[ "$law" = alartCurnier ] || printf 'frictionLaw %s;\n' "$law" >> "$c/constant/contactProperties"
 cat > "$c/constant/processSchedule" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; location "constant"; object processSchedule; }
 steps
@@ -377,23 +386,37 @@ sed -i 's/^endTime .*/endTime         2;/; s/^writeInterval .*/writeInterval   0
     "$c/system/controlDict"
 if run "$c"; then
     Ft=$(summary "$c" frictionForce)
-    checkClose "(b) sticking: friction force vs applied T = $T" "$Ft" "$T" 1e-6
+    checkClose "(b) sticking ($law): friction force vs applied T = $T" "$Ft" "$T" 1e-6
     # Restart at t = 1.5, inside the release ramp of the left face's
     # constraint (its reaction at t = 1 decays to zero over the pull): the
     # reaction at the restart state is the load still to ramp down
-    slidingRestart "(b) restart inside the constraint-release ramp" "$c" 1.5 2
+    [ "$restart" = yes ] && slidingRestart "(b) restart inside the constraint-release ramp" "$c" 1.5 2
     # slip during the pull: x movement of the bottom nodes between t = 1 and 2
     slip=$(awk '!/^#/ && NF >= 13 { if (FNR == NR) x[$1] = $4; else { ++n; d = $4 - x[$1]; if (d < 0) d = -d; if (d > m) m = d } }
         END { if (n) printf "%.3g", m }' "$(contactFile "$c" 1 blockBottom)" "$(contactFile "$c" 2 blockBottom)")
     maxSlipStep=$(awk '!/^#/ && NF >= 13 { d = $12 < 0 ? -$12 : $12; if (d > m) m = d } END { printf "%.3g", m }' \
         "$(contactFile "$c" 2 blockBottom)")
-    echo "    (b) max bottom-node movement during the pull $slip (block length 2), max |slip| column at t = 2: $maxSlipStep"
-    checkBelow "(b) sticking: max bottom-node movement / block length" \
-        "$(calc 's/2' s="$slip")" 2e-5
+    echo "    (b) $law: max bottom-node movement during the pull $slip (block length 2), max |slip| column at t = 2: $maxSlipStep"
+    checkBelow "(b) sticking ($law): max bottom-node movement / block length" \
+        "$(calc 's/2' s="$slip")" "$bound"
 else
-    reportFailure "sticking block run" "$c"
+    reportFailure "sticking block run ($law)" "$c"
 fi
 keepOrRemove "$c"
+}
+stickingBlock alartCurnier 1e-8 yes
+
+# (d) the regularised law: sliding at mu N, and sticking within its creep
+c=$(newCase slidingBlock)
+printf 'frictionLaw regularised;\n' >> "$c/constant/contactProperties"
+if run "$c"; then
+    checkClose "(d) regularised law, sliding: friction force (toolForce) vs mu N" \
+        "$(summary "$c" frictionForce)" "$muN" 0.005
+else
+    reportFailure "sliding block run (regularised law)" "$c"
+fi
+keepOrRemove "$c"
+stickingBlock regularised 2e-5 no
 
 #------------------------------------------------------------------------------
 # 6. Restart inside a tool-release ramp (flat punch case): press (t 0 -> 1),

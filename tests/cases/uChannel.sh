@@ -9,7 +9,8 @@
 #    consulted; README of the tutorial): this test guards against changes
 #    of the result, the mesh and eps studies of the README against its
 #    accuracy. Springback must cost less than forming (the paper: below
-#    0.1 of it).
+#    0.1 of it). Newton converges quadratically at the end of the steps
+#    (observed order, median over the steps, at least 1.8).
 # 2. Hard cases, forming to a 5 mm stroke only (what they test is decided
 #    at first contact, in the first millimetres):
 #    a. punch and die radii equal to 2 t (1.56 mm) instead of 5 mm;
@@ -73,6 +74,10 @@ if (cd "$c" && timeout 1800 ./Allrun > log.Allrun 2>&1); then
     checkBelow "U-channel: springback / forming wall time" \
         "$(awk -v s="$(value "$c" springbackWallTime)" -v f="$(value "$c" formingWallTime)" \
             'BEGIN { printf "%.4g", s/f }')" 0.5
+    # Newton's order in the last iterations of the steps (energy norms;
+    # median over the steps): quadratic once the contact status is found
+    q=$(newtonOrder "$c/log.formFoam")
+    checkBelow "U-channel: Newton order (median over the steps) above 1.8" 1.8 "$q"
 else
     fail "U-channel run (see $c/log.formFoam)"
     tail -15 "$c/log.formFoam" | sed 's/^/    | /'

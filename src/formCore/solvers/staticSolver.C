@@ -335,6 +335,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
 
     // Extrapolating predictor: the last increment scaled to this step
     bool predicted = false;
+    vecX predictedIncrement;
     if
     (
         newton_.extrapolate && lastIncrement_.size() == model_.state().size()
@@ -355,12 +356,13 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             const double h1 = lastDeltaT_, h2 = previousDeltaT_;
             const vecX d1 = lastIncrement_/h1;
             const vecX d0 = previousIncrement_/h2;
-            model_.addToState(h*d1 + (h*(h + h1)/(h1 + h2))*(d1 - d0));
+            predictedIncrement = h*d1 + (h*(h + h1)/(h1 + h2))*(d1 - d0);
         }
         else
         {
-            model_.addToState((h/lastDeltaT_)*lastIncrement_);
+            predictedIncrement = (h/lastDeltaT_)*lastIncrement_;
         }
+        model_.addToState(predictedIncrement);
         predicted = true;
     }
 
@@ -463,12 +465,28 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     }
     // A step that starts close to equilibrium (||r0|| <= sqrt(forceTol)
     // times the load and reaction level, e.g. a small change of load): its
-    // first update is small, so the energy ratio has no reference, as
-    // after a prediction, and the force criterion alone decides
+    // first update is small, so the energy ratio has no reference and the
+    // force criterion alone decides
     const double loadLevel =
         std::max(model_.externalForceNorm(), model_.reactionNorm());
     const bool nearEquilibrium =
-        predicted || r0 <= std::sqrt(newton_.forceTolerance)*loadLevel;
+        r0 <= std::sqrt(newton_.forceTolerance)*loadLevel;
+    // Energy reference of a predicted step: the work of the predicted
+    // increment on the tangent, dU_pred . K_ff dU_pred (for a step
+    // without prediction the reference dU^(1) . r^(0) is the same form,
+    // dU^(1) = K^-1 r^(0)); the first update of a good prediction is small
+    // and no reference for the step
+    double predictedEnergy = 0;
+    if (predicted && nFree > 0)
+    {
+        const std::vector<int>& free = model_.freeDofs();
+        vecX v(free.size());
+        for (std::size_t i = 0; i < free.size(); ++i)
+        {
+            v(i) = predictedIncrement(free[i]);
+        }
+        predictedEnergy = std::abs(v.dot(model_.Kff()*v));
+    }
 
     if (nFree == 0)
     {
@@ -527,7 +545,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         // the force level, and the energy of this update relative to the
         // first one
         const double energy = std::abs(beta*dU.dot(rhs));
-        if (i == 1) energy1 = energy;
+        if (i == 1) energy1 = predictedEnergy > 0 ? predictedEnergy : energy;
         const double energyRatio = energy1 > 0 ? energy/energy1 : 0;
         const double rNorm = r.norm();
         const double ref = std::max
@@ -556,9 +574,6 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         {
             throw stepFailure("non-finite residual");
         }
-        // After an extrapolated prediction the first update may be small
-        // already, so the energy ratio (relative to it) is no measure: the
-        // force criterion decides
         const bool converged =
             rNorm <= newton_.absoluteForceTolerance
          || (
@@ -570,7 +585,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         if
         (
             !converged && i == 1 && !nearEquilibrium && energy1 > 0
-         && rNorm <= newton_.forceTolerance*ref
+         && !predicted && rNorm <= newton_.forceTolerance*ref
         )
         {
             const double next = std::abs(solveAgain(r).dot(r))/energy1;

@@ -325,9 +325,11 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
     controls.epsilonT = dict_.getOrDefault<scalar>("epsilonT", 0);
     controls.stiffness = dict_.getOrDefault<scalar>("stiffness", 0);
     controls.frictionLaw =
-        dict_.getOrDefault<word>("frictionLaw", "regularised");
-    controls.frictionAugmentation =
-        dict_.getOrDefault<scalar>("frictionAugmentation", 1);
+        dict_.getOrDefault<word>("frictionLaw", controls.frictionLaw);
+    controls.frictionAugmentation = dict_.getOrDefault<scalar>
+    (
+        "frictionAugmentation", controls.frictionAugmentation
+    );
     controls.maxStatusChanges =
         dict_.getOrDefault<label>("maxStatusChanges", 8);
     if (controls.maxStatusChanges < 1)

@@ -206,11 +206,18 @@ struct contactSetup
         tools.push_back(punch);
     }
 
-    contactModel model(double friction, double epsN, double epsT) const
+    contactModel model
+    (
+        double friction,
+        double epsN,
+        double epsT,
+        const std::string& law = contactControls().frictionLaw
+    ) const
     {
         contactControls c;
         c.epsilonN = epsN;
         c.epsilonT = epsT;
+        c.frictionLaw = law;
         c.maxStatusChanges = 1000;
         return contactModel
         (
@@ -224,11 +231,18 @@ struct contactSetup
 //- bathe: the slip-rate law of the Bathe scheme's second stage
 //  (contactModel::setSlipRateLaw), after a committed first stage that
 //  slid the nodes
-void checkTangent(double friction, bool forceControlled, bool bathe = false)
+//  law: the friction law (contactModel.H; default: the default law)
+void checkTangent
+(
+    double friction,
+    bool forceControlled,
+    bool bathe = false,
+    const std::string& law = contactControls().frictionLaw
+)
 {
     const contactSetup s(forceControlled);
     // eps large enough for central differences to resolve the corner
-    contactModel cm = s.model(friction, 1e-6, 1e-6);
+    contactModel cm = s.model(friction, 1e-6, 1e-6, law);
     const int N = s.mesh.nNodes()*2;
     const int nC = cm.nUnknowns();
 
@@ -272,7 +286,8 @@ void checkTangent(double friction, bool forceControlled, bool bathe = false)
     const double scale = K.cwiseAbs().maxCoeff();
     EXPECT_GT(scale, 0);
     EXPECT_TRUE(test::fdError("contactModel rigid tool", (K - Kfd).cwiseAbs().maxCoeff()/scale, fdTolContactModel))
-        << "friction " << friction << " forceControlled " << forceControlled;
+        << "friction " << friction << " forceControlled " << forceControlled
+        << " law " << law;
 }
 
 
@@ -295,6 +310,22 @@ TEST(contactModel, tangentWithFrictionBatheSlipRateLaw)
 {
     checkTangent(0.3, false, true);
     checkTangent(0.2, true, true);
+}
+
+// Both friction laws, whatever the default
+TEST(contactModel, tangentWithEachFrictionLaw)
+{
+    for (const std::string law : {"alartCurnier", "regularised"})
+    {
+        checkTangent(0.3, false, false, law);
+        checkTangent(0.2, true, true, law);
+    }
+}
+
+TEST(contactModel, unknownFrictionLawIsAnInputError)
+{
+    const contactSetup s(false);
+    EXPECT_THROW(s.model(0.3, 1e-6, 1e-6, "coulomb"), inputError);
 }
 
 
