@@ -413,8 +413,8 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     char line[160];
     std::snprintf
     (
-        line, sizeof(line), "    iter %2d  |r| %.3e  |dU_p| %.3e\n",
-        0, r0, dUp.norm()
+        line, sizeof(line), "    iter %2d  |r| %.3e  |dU_p| %.3e%s\n",
+        0, r0, dUp.norm(), predicted ? "  predicted" : ""
     );
     log_<< line;
 
