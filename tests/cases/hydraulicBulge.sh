@@ -21,14 +21,19 @@
 #       p_max within 0.15 %, 0.5 % and 0.1 % (observed 0.054 %, 0.21 %,
 #       0.024 %);
 #    e. volume control passes the pressure maximum (final p < 0.99 p_max);
-#       pressure control stops at it (its last p within 0.03 % of p_max;
-#       observed 0.009 %);
+#       pressure control stops at it (its last p within 0.1 % of p_max;
+#       observed 0.046 %: near the limit point the tangent turns singular
+#       and the last steps before it fail; 0.009 % before 2026-11-25, when
+#       a predicted step was accepted on a loosened force criterion);
 #    f. Newton converges quadratically (observed order from the log);
 #       a restart from the middle of the run reproduces it (1e-10);
 #    g. the summary names the fluid model and the entries the issue asks.
 # 2. A dry case builds no fluid: the same blank with the oil replaced by a
 #    follower pressure on its lower face (no fluid region) reproduces the
-#    pressure-controlled run (pole height at p = 9 MPa within 1e-6), and its
+#    pressure-controlled run (pole height at p = 9 MPa within 1e-5:
+#    observed 1.9e-6, what two Newton paths converged to forceTolerance
+#    1e-8 differ by on this flexible membrane; before 2026-11-25 the two
+#    runs took identical iterates and agreed to 1e-8), and its
 #    log and summary show no fluid object and no fluid time.
 # 3. Bad input of the fluid region: clear errors naming file and entry.
 # 4. The ALE fluid model from the same case against the hydrostatic one.
@@ -94,7 +99,7 @@ if (cd "$c" && OMP_NUM_THREADS=1 timeout 1800 ./Allrun > log.Allrun 2>&1) \
     if [ -f "$c/pressureControl/postProcessing/history.dat" ] \
        && grep -q "no convergence for the step" "$c/pressureControl/log.formFoam"; then
         checkClose "bulge: pressure control stops at the maximum" \
-            "$(lastHistory "$c/pressureControl" pressure)" "$pMax" 3e-4
+            "$(lastHistory "$c/pressureControl" pressure)" "$pMax" 1e-3
     else
         fail "bulge: the pressure-controlled run did not stop at the maximum"
     fi
@@ -175,7 +180,7 @@ cp -r "$formFoamTop/tutorials/hydraulicBulge/." "$p/"
 ) || { fail "bulge pressure control to 9 MPa: run (see $p/log.formFoam)"; }
 if [ -f "$d/postProcessing/summary" ] && [ -f "$p/postProcessing/summary" ]; then
     checkClose "bulge dry: follower pressure vs the oil cavity at 9 MPa (pole height)" \
-        "$(value "$d" poleHeight)" "$(value "$p" poleHeight)" 1e-6
+        "$(value "$d" poleHeight)" "$(value "$p" poleHeight)" 1e-5
     [ "$(summaryValue "$d" fluidModel)" = none ] \
         && pass "bulge dry: summary fluidModel none" \
         || fail "bulge dry: summary fluidModel '$(summaryValue "$d" fluidModel)'"

@@ -333,14 +333,53 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     vecX r;
     model_.beginIncrement(t0, t1);
 
+    // Force level of the equilibrium tests: loads, reactions and the
+    // reference under which the committed state was accepted
+    const auto level = [&]()
+    {
+        return std::max
+        (
+            {
+                model_.externalForceNorm(), model_.reactionNorm(),
+                model_.forceLevel()
+            }
+        );
+    };
+
     // Extrapolating predictor: the last increment scaled to this step
     bool predicted = false;
     vecX predictedIncrement;
-    if
-    (
+    bool predict =
         newton_.extrapolate && lastIncrement_.size() == model_.state().size()
-     && lastDeltaT_ > 0
-    )
+     && lastDeltaT_ > 0;
+    // A step with nothing to do (a held load, a dwell) must not be
+    // pushed off its equilibrium by the last increment: when no
+    // prescribed dof moves, the start state is checked first (one
+    // residual, no tangent) and accepted if it is in equilibrium
+    if (predict && nFree > 0 && model_.prescribedIncrement(t1).norm() == 0)
+    {
+        if (evaluate(t1, r, false) && r.norm() <= newton_.forceTolerance*level())
+        {
+            report.residualNorms.push_back(r.norm());
+            report.updateNorms.push_back(0);
+            report.energyNorms.push_back(0);
+            lastResidual_ = r.norm();
+            char note[160];
+            std::snprintf
+            (
+                note, sizeof(note),
+                "    equilibrium at the start state: |r| %.3e <= forceTolerance"
+                " * %.3e\n", r.norm(), level()
+            );
+            log_<< note;
+            model_.setForceLevel(level());
+            report.iterations = 0;
+            return true;
+        }
+        model_.revert();
+        model_.beginIncrement(t0, t1);
+    }
+    if (predict)
     {
         const double h = t1 - t0;
         if
@@ -363,6 +402,12 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             predictedIncrement = (h/lastDeltaT_)*lastIncrement_;
         }
         model_.addToState(predictedIncrement);
+        // The prescribed dofs at their values of t1: the predicted free
+        // dofs moved with them, and a state with the free dofs moved but
+        // the prescribed ones left behind would strain the elements at a
+        // prescribed boundary by a whole increment (bending under a
+        // prescribed end rotation turned the tangent indefinite)
+        model_.applyPrescribed(t1);
         predicted = true;
     }
 
@@ -425,16 +470,6 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     // under which the committed state was accepted; L does not vanish
     // when the increment does. No update is computed then (its energy
     // would be round-off, and no energy ratio could be formed from it).
-    const auto level = [&]()
-    {
-        return std::max
-        (
-            {
-                model_.externalForceNorm(), model_.reactionNorm(),
-                model_.forceLevel()
-            }
-        );
-    };
     if (nFree > 0 && r0 <= newton_.forceTolerance*level())
     {
         // r0 is linearised in the prescribed increment: evaluate at the
