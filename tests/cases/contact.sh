@@ -494,14 +494,14 @@ sD=$(awk 'BEGIN { printf "%.12g", 200000/(1 - 0.3^2)*0.01/7 }')
 pD=$(awk -v s="$sD" 'BEGIN { printf "%.12g", s/(1 + 0.3/(1 - 0.3)*0.01/7) }')
 FD=$(awk -v s="$sD" 'BEGIN { printf "%.12g", 10*s }')
 # punchForceChecks <label> <punch force> <bottom force> <tolerance> <Newton
-# iterations> <steps>: force against the exact one, equilibrium, Newton
-# iterations per step at most 6
+# iterations> <steps> [<bound>]: force against the exact one, equilibrium,
+# Newton iterations per step at most <bound> (default 6)
 punchForceChecks()
 {
     checkClose "elastic punch ($1): punch reaction vs E/(1 - nu^2) 0.01/7 x 10" "$2" "$FD" "$4"
     checkClose "elastic punch ($1): punch reaction vs bottom reaction (equilibrium)" "$2" "$3" 1e-8
     checkBelow "elastic punch ($1): Newton iterations per step" \
-        "$(calc 'i/s' i="$5" s="$6")" 6.01
+        "$(calc 'i/s' i="$5" s="$6")" "${7:-6.01}"
 }
 # deformablePunch <nPunch> <pressure tolerance> <force tolerance> <label>
 deformablePunch()
@@ -544,7 +544,14 @@ deformablePunch 13 0.15 0.001 "non-matching, finer punch"
 #     roles swapped). The force splits between the passes in an uneven
 #     nodal pattern, but the total comes closer to the exact one than with
 #     one pass on the same non-matching meshes (5, 7 punch elements: -1.9 %
-#     single-pass), at the same Newton cost
+#     single-pass), at nearly the same Newton cost: at most 8 iterations
+#     per step (observed 7.5 with 7 punch elements). Two passes press the
+#     same points from both sides, so the split of the force between them
+#     is not unique: once the force criterion holds, the energy criterion
+#     of the predicted second step spends a few line-search iterations in
+#     that direction before the solver sees that no step reduces the
+#     residual (staticSolver.H; before 2026-11-25 a predicted step was
+#     accepted on the force criterion alone)
 twoPass()
 {
     local np=$1 c F Fb its steps
@@ -560,7 +567,7 @@ twoPass()
         steps=$(summary "$c" steps)
         echo "    elastic punch, two-pass ($np punch / 8 block elements): force $F (exact $FD)," \
              "Newton $its iterations in $steps steps"
-        punchForceChecks "two-pass, $np" "$F" "$Fb" 0.002 "$its" "$steps"
+        punchForceChecks "two-pass, $np" "$F" "$Fb" 0.002 "$its" "$steps" 8.01
     else
         reportFailure "elastic punch run (two-pass, $np)" "$c"
     fi

@@ -654,7 +654,25 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             log_<< "    force residual at round-off level (energy converged,"
                    " |r| stagnates): accepted\n";
         }
-        if (converged || roundOff)
+        // Stalled at the force tolerance: the force criterion holds and
+        // the line search found no step along Newton's direction that
+        // reduces the residual (beta cut to its floor). The energy of the
+        // update then sits in a direction the residual does not see (the
+        // non-unique multipliers of two-pass contact, where both sides
+        // press the same points): the state cannot be improved.
+        const bool stalled =
+            !converged && !roundOff
+         && i > 1
+         && newton_.lineSearch
+         && beta <= std::pow(0.5, newton_.maxLineSearchIterations)
+         && rNorm >= 0.99*rPrevNorm
+         && rNorm <= newton_.forceTolerance*ref;
+        if (stalled)
+        {
+            log_<< "    force criterion holds and no line-search step reduces"
+                   " |r|: accepted\n";
+        }
+        if (converged || roundOff || stalled)
         {
             model_.setForceLevel(ref);
             return true;
