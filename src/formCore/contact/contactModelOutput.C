@@ -1,0 +1,215 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    contactModel: results per pair and tool, names of the unknowns, the
+    description for the log and the restart state (contactModel.H).
+\*---------------------------------------------------------------------------*/
+#include "contactModelImpl.H"
+#include "solidElement.H"
+#include <algorithm>
+#include <cstdio>
+
+namespace form
+{
+
+
+std::vector<contactNodeResult> contactModel::pairResults
+(
+    const std::string& pair,
+    const vecX& U,
+    double t
+) const
+{
+    const impl& m = *impl_;
+    int ip = -1;
+    for (std::size_t i = 0; i < m.pairSpecs.size(); ++i)
+    {
+        if (m.pairSpecs[i].name == pair) ip = int(i);
+    }
+    if (ip < 0)
+    {
+        throw inputError(pair, "unknown contact pair '" + pair + "'");
+    }
+    const impl::pairData& p = m.pairs[ip];
+
+    // Consistent edge weights int N_a ds (per depth or full ring) on the
+    // current configuration
+    std::map<int, double> weight;
+    for (const std::vector<int>& face : p.faces)
+    {
+        const int n = int(face.size());
+        matX X(n, 2);
+        for (int a = 0; a < n; ++a) X.row(a) = m.position(face[a], U);
+        const vecX f =
+            edgeLoad::deadTraction(X, Eigen::Vector2d(1, 0), m.analysis);
+        for (int a = 0; a < n; ++a) weight[face[a]] += f(2*a);
+    }
+
+    std::vector<contactNodeResult> results;
+    const Eigen::Vector2d d =
+        p.target ? Eigen::Vector2d::Zero() : m.translation(p.tool, t);
+    for (std::size_t a = 0; a < p.nodes.size(); ++a)
+    {
+        contactNodeResult res;
+        res.node = p.nodes[a];
+        res.x = m.position(res.node, U);
+        const int il = p.first + p.perNode*int(a);
+        const double lambda = p.active ? m.x(il) : 0.0;
+        const double tau = p.active && p.perNode == 2 ? m.x(il + 1) : 0.0;
+        res.normalForce = m.k*lambda;
+        res.tangentialForce = m.k*tau;
+        res.weight = weight[res.node];
+        res.pressure = res.weight > 0 ? res.normalForce/res.weight : 0;
+        res.shear = res.weight > 0 ? res.tangentialForce/res.weight : 0;
+        if (p.target)
+        {
+            const segmentProjection P =
+                p.target->project(res.x, res.node, U, p.edge[a]);
+            res.gap =
+                P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
+            res.slip = p.lastSlip[a];
+            res.slipRate = p.rate[a];
+            res.closed = P.onTarget && lambda > P.gap;
+            results.push_back(res);
+            continue;
+        }
+        const profileProjection P =
+            m.tools[p.tool].profile->project(res.x - d);
+        res.gap = P.gap;
+        // Slip over the last step: after a commit (output time) that is
+        // the committed step's; during a step, the slip so far
+        res.slip =
+            std::abs(P.xi - p.xiCommitted[a]) > 0
+          ? P.xi - p.xiCommitted[a] : p.lastSlip[a];
+        res.slipRate = p.rate[a];
+        res.closed = lambda > P.gap;
+        results.push_back(res);
+    }
+    return results;
+}
+
+
+int contactModel::nClosed() const { return impl_->nClosed; }
+
+
+std::string contactModel::unknownName(int j) const
+{
+    const impl& m = *impl_;
+    for (std::size_t T = 0; T < m.tools.size(); ++T)
+    {
+        if (m.toolUnknown[T] == j) return m.tools[T].name + " position";
+    }
+    for (std::size_t i = 0; i < m.pairs.size(); ++i)
+    {
+        const auto& p = m.pairs[i];
+        const int n = p.perNode*int(p.nodes.size());
+        if (j >= p.first && j < p.first + n)
+        {
+            const int a = (j - p.first)/p.perNode;
+            return m.pairSpecs[i].name + " node " + std::to_string(p.nodes[a])
+              + ((j - p.first) % p.perNode ? " friction" : " normal");
+        }
+    }
+    return "unknown " + std::to_string(j);
+}
+
+bool contactModel::touched(const std::string& tool) const
+{
+    const int T = impl_->findTool(tool);
+    for (const auto& p : impl_->pairs)
+    {
+        if (p.tool == T && p.touched) return true;
+    }
+    return false;
+}
+
+double contactModel::stiffness() const { return impl_->k; }
+double contactModel::epsilonN() const { return impl_->epsN; }
+double contactModel::epsilonT() const { return impl_->epsT; }
+
+
+std::string contactModel::describe() const
+{
+    const impl& m = *impl_;
+    std::string s;
+    for (std::size_t i = 0; i < m.pairs.size(); ++i)
+    {
+        const auto& p = m.pairs[i];
+        const auto& ps = m.pairSpecs[i];
+        s += "pair " + ps.name + ": patch " + ps.faceSet + " ("
+          + std::to_string(p.nodes.size()) + " nodes) against "
+          + (p.target
+              ? "patch " + ps.targetFaceSet + " ("
+              + std::to_string(p.target->nEdges()) + " edges, deformable)"
+              : "tool " + ps.tool + (m.tools[p.tool].forceControlled
+              ? " (force-controlled)" : " (motion)"))
+          + ", friction " + formatNumber(p.mu) + "\n";
+    }
+    s += "k " + formatNumber(m.k) + ", sqrt(epsN) "
+      + formatNumber(std::sqrt(m.epsN)) + ", sqrt(epsT) "
+      + (m.epsT > 0 ? formatNumber(std::sqrt(m.epsT)) : "auto (1 % of tool speed)")
+      + ", friction law " + m.controls.frictionLaw
+      + (
+            m.controls.frictionLaw == "alartCurnier"
+          ? " (augmentation " + formatNumber(m.controls.frictionAugmentation)
+          + ")"
+          : std::string()
+        )
+      + ", unknowns "
+      + std::to_string(m.x.size());
+    return s;
+}
+
+
+std::vector<double> contactModel::state() const
+{
+    const impl& m = *impl_;
+    std::vector<double> s(m.xCommitted.data(),
+        m.xCommitted.data() + m.xCommitted.size());
+    for (const auto& p : m.pairs)
+    {
+        s.insert(s.end(), p.xiCommitted.begin(), p.xiCommitted.end());
+        s.push_back(p.active ? 1 : 0);
+        s.push_back(p.touched ? 1 : 0);
+    }
+    for (bool r : m.toolReleased) s.push_back(r ? 1 : 0);
+    s.push_back(m.tCommitted);
+    return s;
+}
+
+
+void contactModel::setState(const std::vector<double>& s)
+{
+    impl& m = *impl_;
+    std::size_t expected = m.x.size() + m.tools.size() + 1;
+    for (const auto& p : m.pairs) expected += p.nodes.size() + 2;
+    if (s.size() != expected)
+    {
+        throw numericalError
+        (
+            "contactModel::setState: " + std::to_string(s.size())
+          + " values for a contact state of " + std::to_string(expected)
+        );
+    }
+    std::size_t i = 0;
+    for (int j = 0; j < m.x.size(); ++j) m.x(j) = s[i++];
+    m.xCommitted = m.x;
+    for (auto& p : m.pairs)
+    {
+        for (double& xi : p.xiCommitted) xi = s[i++];
+        p.active = s[i++] > 0.5;
+        p.touched = s[i++] > 0.5;
+    }
+    for (std::size_t T = 0; T < m.tools.size(); ++T)
+    {
+        m.toolReleased[T] = s[i++] > 0.5;
+    }
+    m.tCommitted = s[i++];
+    // A commit() right after a restart (formScene commits the read state)
+    // must keep this time: it is the start of the next slip-rate interval
+    m.tEvaluated = m.tCommitted;
+    m.xiInitialised = true;
+}
+
+} // namespace form
