@@ -702,6 +702,16 @@ bool contactModel::released(const std::string& tool) const
 }
 
 
+bool contactModel::active() const
+{
+    for (const impl::pairData& p : impl_->pairs)
+    {
+        if (p.active) return true;
+    }
+    return false;
+}
+
+
 const std::vector<rigidToolSpec>& contactModel::tools() const
 {
     return impl_->tools;

@@ -1087,8 +1087,20 @@ std::string solidModel::iterationNote(const vecX& residual) const
     if (i < nFree)
     {
         const int d = m.numbering.freeDofs[i];
-        note += "  max at node " + std::to_string(d/m.nDim)
-          + (d % m.nDim ? " y" : " x");
+        const int node = d/m.nDim;
+        note += "  max at node " + std::to_string(node)
+          + (d % m.nDim ? " y" : " x") + " (";
+        for (int c = 0; c < m.nDim; ++c)
+        {
+            char buf[32];
+            std::snprintf
+            (
+                buf, sizeof(buf), c ? " %.4g" : "%.4g",
+                m.mesh.X(node, c) + m.U(m.nDim*node + c)
+            );
+            note += buf;
+        }
+        note += ")";
     }
     else
     {

@@ -712,9 +712,30 @@ void Foam::formScene::run()
         sc.deltaT = ps.deltaT;
         sc.maxDeltaT = ps.maxDeltaT;
         sc.minDeltaT = min(steps_.minDeltaT, ps.deltaT);
+        // auto line search: the residual-norm backtracking while contact
+        // acts or a fluid is coupled (saddle points, friction); the energy
+        // line search once every tool is released (springback: a
+        // potential problem, where the residual norm, dominated by the
+        // sheet's stiff membrane modes, cuts Newton's steps to 1/8-1/16;
+        // README of the U-channel, "Convergence")
+        form::newtonControls nc = newton_;
+        if (lineSearchType_ == "auto")
+        {
+            nc.residualLineSearch =
+                fluid_ || (model.contact() && model.contact()->active());
+            if (nc.residualLineSearch != newton_.residualLineSearch)
+            {
+                Info<< "    line search: "
+                    << (
+                           nc.residualLineSearch
+                         ? "residual norm (backtracking)"
+                         : "energy (no contact acts in this step)"
+                       ) << endl;
+            }
+        }
         form::staticSolver solver
         (
-            model, *linearSolver_, newton_, sc, std::cout
+            model, *linearSolver_, nc, sc, std::cout
         );
         solver.setIntegrator(stepDynamic ? integrator_.get() : nullptr);
         // A restart inside this step continues it as the interrupted run

@@ -429,6 +429,21 @@ TEST(contactModel, forceControlledToolApproachesTheBody)
 }
 
 
+// active(): true while a pair acts; false once its tool is released (the
+// scene then chooses the energy line search: formScene.C)
+TEST(contactModel, releasingEveryToolLeavesNoActivePair)
+{
+    const contactSetup s(false);
+    contactModel cm = s.model(0.2, 0, 0);
+    const int N = s.mesh.nNodes()*2;
+    EXPECT_TRUE(cm.active());
+    EXPECT_FALSE(cm.released("punch"));
+    cm.releaseTool("punch", vecX::Zero(N));
+    EXPECT_TRUE(cm.released("punch"));
+    EXPECT_FALSE(cm.active());
+}
+
+
 TEST(contactModel, toolThatCannotTouchIsAnInputError)
 {
     contactSetup s(true);
