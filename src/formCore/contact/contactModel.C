@@ -38,7 +38,8 @@ contactModel::contactModel
     m.tools = std::move(tools);
     m.pairSpecs = std::move(pairs);
     m.controls = controls;
-    m.nDofs = mesh.nNodes()*mesh.nDim;
+    m.dofs = dofMap::of(mesh);
+    m.nDofs = m.dofs.nDofs();
 
     if (mesh.nDim != 2 || analysis == analysisType::solid3D)
     {
@@ -516,10 +517,8 @@ void contactModel::evaluate
             const normalConstraint c =
                 normalConstraintFunction(P.gap, lambda, m.epsN);
             const Eigen::Vector2d f = k*(lambda*n + tau*tv);
-            fext(2*node) += f(0);
-            fext(2*node + 1) += f(1);
-            m.friction(2*node) += k*tau*tv(0);
-            m.friction(2*node + 1) += k*tau*tv(1);
+            m.dofs.add2(fext, node, f);
+            m.dofs.add2(m.friction, node, k*tau*tv);
             m.toolForce[T] += f;
             r(il) = k*c.w;
 
@@ -550,8 +549,11 @@ void contactModel::evaluate
 
             for (int i = 0; i < 2; ++i)
             {
-                const int di = 2*node + i;
-                for (int j = 0; j < 2; ++j) add(di, 2*node + j, Kuu(i, j));
+                const int di = m.dofs.dof(node, i);
+                for (int j = 0; j < 2; ++j)
+                {
+                    add(di, m.dofs.dof(node, j), Kuu(i, j));
+                }
                 add(di, N + il, -k*n(i));
                 add(N + il, di, Klu(i));
                 if (p.perNode == 2)
@@ -573,9 +575,9 @@ void contactModel::evaluate
             const Eigen::Vector2d Kuz = -Kuu*e;
             for (int i = 0; i < 2; ++i)
             {
-                add(2*node + i, N + iz, Kuz(i));
+                add(m.dofs.dof(node, i), N + iz, Kuz(i));
                 // K_z,u = e . df/dy = -e^T Kuu
-                add(N + iz, 2*node + i, -(e.transpose()*Kuu)(i));
+                add(N + iz, m.dofs.dof(node, i), -(e.transpose()*Kuu)(i));
             }
             add(N + il, N + iz, -Klu.dot(e));
             add(N + iz, N + il, k*e.dot(n));
@@ -629,11 +631,11 @@ void contactModel::commit(const vecX& U)
             );
             if (!P.onTarget) { p.lastSlip[a] = 0; continue; }
             Eigen::Vector2d delta =
-                (U - m.Ucommitted).segment<2>(2*p.nodes[a]);
+                m.dofs.vector2(U - m.Ucommitted, p.nodes[a]);
             for (std::size_t b = 0; b < P.nodes.size(); ++b)
             {
                 delta -=
-                    P.N(b)*(U - m.Ucommitted).segment<2>(2*P.nodes[b]);
+                    P.N(b)*m.dofs.vector2(U - m.Ucommitted, P.nodes[b]);
             }
             p.lastSlip[a] = P.tangent.dot(delta);
         }
@@ -686,8 +688,8 @@ std::vector<std::pair<int, double>> contactModel::releaseTool
             const double tau = p.perNode == 2 ? m.xCommitted(il + 1) : 0.0;
             const Eigen::Vector2d f =
                 m.k*(m.xCommitted(il)*P.normal + tau*P.tangent);
-            forces.push_back({2*node, f(0)});
-            forces.push_back({2*node + 1, f(1)});
+            forces.push_back({m.dofs.dof(node, 0), f(0)});
+            forces.push_back({m.dofs.dof(node, 1), f(1)});
         }
         p.active = false;
     }

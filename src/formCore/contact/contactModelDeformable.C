@@ -71,12 +71,12 @@ void contactModel::impl::evaluateDeformable
         const int m = int(P.nodes.size());
         const int nq = 2 + 2*m;
         std::vector<int> dof(nq);
-        dof[0] = 2*node;
-        dof[1] = 2*node + 1;
+        dof[0] = dofs.dof(node, 0);
+        dof[1] = dofs.dof(node, 1);
         for (int b = 0; b < m; ++b)
         {
-            dof[2 + 2*b] = 2*P.nodes[b];
-            dof[3 + 2*b] = 2*P.nodes[b] + 1;
+            dof[2 + 2*b] = dofs.dof(P.nodes[b], 0);
+            dof[3 + 2*b] = dofs.dof(P.nodes[b], 1);
         }
         const Eigen::Vector2d& n = P.normal;
         const Eigen::Vector2d& tv = P.tangent;
@@ -109,12 +109,11 @@ void contactModel::impl::evaluateDeformable
         Eigen::VectorXd dSlip;
         if (friction)
         {
-            Eigen::Vector2d delta =
-                (U - Un).segment<2>(2*node);
+            Eigen::Vector2d delta = dofs.vector2(U - Un, node);
             Eigen::Vector2d dTarget = Eigen::Vector2d::Zero();
             for (int b = 0; b < m; ++b)
             {
-                const Eigen::Vector2d dxb = (U - Un).segment<2>(2*P.nodes[b]);
+                const Eigen::Vector2d dxb = dofs.vector2(U - Un, P.nodes[b]);
                 delta -= P.N(b)*dxb;
                 dTarget += P.dN(b)*dxb;
             }

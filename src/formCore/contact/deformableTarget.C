@@ -62,7 +62,8 @@ deformableTarget::deformableTarget
     const std::vector<feFace>& faces
 )
 :
-    mesh_(&mesh)
+    mesh_(&mesh),
+    dofs_(dofMap::of(mesh))
 {
     std::map<int, int> endCount;
     for (const feFace& f : faces)

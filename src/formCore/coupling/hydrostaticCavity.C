@@ -25,6 +25,7 @@ hydrostaticCavity::hydrostaticCavity
 )
 :
     mesh_(mesh),
+    dofs_(dofMap::of(mesh)),
     analysis_(analysis),
     spec_(std::move(spec)),
     p_(vecX::Zero(1))
@@ -86,7 +87,7 @@ hydrostaticCavity::hydrostaticCavity
             " control) or a pressure (pressure control)"
         );
     }
-    wetted0_ = wettedVolume(vecX::Zero(mesh_.nNodes()*2));
+    wetted0_ = wettedVolume(vecX::Zero(dofs_.nDofs()));
 }
 
 
@@ -116,8 +117,8 @@ double hydrostaticCavity::wettedVolume
         dofs->clear();
         for (const auto& l : local)
         {
-            dofs->push_back(2*l.first);
-            dofs->push_back(2*l.first + 1);
+            dofs->push_back(dofs_.dof(l.first, 0));
+            dofs->push_back(dofs_.dof(l.first, 1));
         }
     }
     if (gradient) gradient->setZero(nq);
@@ -133,8 +134,8 @@ double hydrostaticCavity::wettedVolume
         for (int a = 0; a < n; ++a)
         {
             const int node = f.nodes[a];
-            x(a, 0) = mesh_.X(node, 0) + U(2*node);
-            x(a, 1) = mesh_.X(node, 1) + U(2*node + 1);
+            x(a, 0) = mesh_.X(node, 0) + U(dofs_.dof(node, 0));
+            x(a, 1) = mesh_.X(node, 1) + U(dofs_.dof(node, 1));
             ix[a] = 2*local[node];
             iy[a] = ix[a] + 1;
         }
@@ -209,8 +210,8 @@ double hydrostaticCavity::wettedArea(const vecX& U) const
         matX x(n, 2);
         for (int a = 0; a < n; ++a)
         {
-            x(a, 0) = mesh_.X(f.nodes[a], 0) + U(2*f.nodes[a]);
-            x(a, 1) = mesh_.X(f.nodes[a], 1) + U(2*f.nodes[a] + 1);
+            x(a, 0) = mesh_.X(f.nodes[a], 0) + U(dofs_.dof(f.nodes[a], 0));
+            x(a, 1) = mesh_.X(f.nodes[a], 1) + U(dofs_.dof(f.nodes[a], 1));
         }
         for (std::size_t q = 0; q < xi.size(); ++q)
         {

@@ -46,6 +46,7 @@ std::vector<freePiece> unsupportedPieces
 {
     const int nNodes = mesh.nNodes();
     const int nDim = mesh.nDim;
+    const dofMap dofs = dofMap::of(mesh);
     std::vector<int> parent(nNodes);
     std::iota(parent.begin(), parent.end(), 0);
     std::vector<bool> used(nNodes, false);
@@ -117,7 +118,7 @@ std::vector<freePiece> unsupportedPieces
             const Eigen::Vector2d r = mesh.X.row(n).head<2>().transpose() - c;
             for (int k = 0; k < 2; ++k)
             {
-                if (!constrained(nDim*n + k)) continue;
+                if (!constrained(dofs.dof(n, k))) continue;
                 Eigen::Vector3d row = Eigen::Vector3d::Zero();
                 if (axi)
                 {

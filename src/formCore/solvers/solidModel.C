@@ -27,6 +27,8 @@ struct solidModel::impl
     analysisType analysis;
     std::map<std::string, std::shared_ptr<material>> materials;
     int nDim = 2;
+    //- Where each node's dofs sit (dofMap.H)
+    dofMap dofs;
 
     struct blockData
     {
@@ -126,7 +128,7 @@ struct solidModel::impl
 
     phaseTimes times;
 
-    int nDofs() const { return mesh.nNodes()*nDim; }
+    int nDofs() const { return dofs.nDofs(); }
 
     //- Unknowns of all coupled blocks
     int nCoupled() const
@@ -179,7 +181,7 @@ struct solidModel::impl
             for (int i = 0; i < nDim; ++i)
             {
                 X(a, i) = mesh.X(nodes[a], i);
-                u(a, i) = U(nodes[a]*nDim + i);
+                u(a, i) = U(dofs.dof(nodes[a], i));
             }
         }
     }
@@ -194,7 +196,7 @@ struct solidModel::impl
             for (int i = 0; i < nDim; ++i)
             {
                 X(a, i) = mesh.X(f.nodes[a], i);
-                u(a, i) = U(f.nodes[a]*nDim + i);
+                u(a, i) = U(dofs.dof(f.nodes[a], i));
             }
         }
     }
@@ -303,18 +305,21 @@ void solidModel::impl::build()
     numbering.build(constrained);
 
     std::vector<std::size_t> offsets(1, 0);
-    std::vector<int> dofs;
+    std::vector<int> elementDofs;
     for (std::size_t e = 0; e < elemBlock.size(); ++e)
     {
         const elementBlock& b = mesh.blocks[elemBlock[e]];
         const int* nodes = b.nodes(elemLocal[e]);
         for (int a = 0; a < b.nodesPerElement; ++a)
         {
-            for (int i = 0; i < nDim; ++i) dofs.push_back(nodes[a]*nDim + i);
+            for (int i = 0; i < nDim; ++i)
+            {
+                elementDofs.push_back(dofs.dof(nodes[a], i));
+            }
         }
-        offsets.push_back(dofs.size());
+        offsets.push_back(elementDofs.size());
     }
-    pattern.build(numbering, offsets, dofs, Kff, Kfp);
+    pattern.build(numbering, offsets, elementDofs, Kff, Kfp);
 
     for (auto& l : tractions) l.faces = locateFaces(l.faceSet);
     for (auto& l : pressures) l.faces = locateFaces(l.faceSet);
@@ -340,7 +345,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
         const Eigen::Vector2d g = bodyForce(t);
         for (int k = 0; k < bodyWeights.size(); ++k)
         {
-            fext(k) += bodyWeights(k)*g(k % nDim);
+            fext(k) += bodyWeights(k)*g(dofs.component(k));
         }
     }
     for (const auto& l : tractions)
@@ -354,7 +359,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
             {
                 for (int i = 0; i < nDim; ++i)
                 {
-                    fext(face.nodes[a]*nDim + i) += f(a*nDim + i);
+                    fext(dofs.dof(face.nodes[a], i)) += f(a*nDim + i);
                 }
             }
         }
@@ -377,7 +382,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
             {
                 for (int i = 0; i < nDim; ++i)
                 {
-                    fext(face.nodes[a]*nDim + i) += f(a*nDim + i);
+                    fext(dofs.dof(face.nodes[a], i)) += f(a*nDim + i);
                 }
             }
             if (!wantTangent) continue;
@@ -430,6 +435,30 @@ solidModel::solidModel
             "mesh coordinates have " + std::to_string(m.mesh.X.cols())
           + " columns but nDim = " + std::to_string(m.nDim)
         );
+    }
+    // Nodes with more dofs than displacement components (rotations)
+    // need elements that carry them: none of the solid elements does
+    for (const int c : m.mesh.nodeDofs)
+    {
+        if (c != m.nDim)
+        {
+            throw inputError
+            (
+                "mesh",
+                "a node with " + std::to_string(c) + " dofs: the solid"
+                " elements carry nDim = " + std::to_string(m.nDim)
+              + " displacement dofs per node (rotational dofs need shell"
+                " elements)"
+            );
+        }
+    }
+    try
+    {
+        m.dofs = dofMap::of(m.mesh);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        throw inputError("mesh", e.what());
     }
 
     const int nNodes = m.mesh.nNodes();
@@ -508,7 +537,7 @@ solidModel::solidModel
     {
         if (!used[node])
         {
-            for (int i = 0; i < m.nDim; ++i) m.orphan[node*m.nDim + i] = true;
+            for (int i = 0; i < m.nDim; ++i) m.orphan[m.dofs.dof(node, i)] = true;
         }
     }
 
@@ -544,7 +573,7 @@ void solidModel::addConstraint
                 "constraint on non-existent node " + std::to_string(node)
             );
         }
-        m.constraints[node*m.nDim + component] = value;
+        m.constraints[m.dofs.dof(node, component)] = value;
     }
     if (m.finalised) m.build();
 }
@@ -592,7 +621,7 @@ void solidModel::releaseConstraint
     {
         for (int node : nodes)
         {
-            const int d = node*m.nDim + component;
+            const int d = m.dofs.dof(node, component);
             if (node >= 0 && node < m.mesh.nNodes() && m.constraints.count(d))
             {
                 m.released.push_back({d, m.fint(d) - m.fext(d), t0, t1});
@@ -643,7 +672,7 @@ void solidModel::releaseConstraint(const std::vector<int>& nodes, int component)
     {
         if (node >= 0 && node < m.mesh.nNodes())
         {
-            m.constraints.erase(node*m.nDim + component);
+            m.constraints.erase(m.dofs.dof(node, component));
         }
     }
     if (m.finalised) m.build();
@@ -659,6 +688,7 @@ void solidModel::finalise()
 const feMesh& solidModel::mesh() const { return impl_->mesh; }
 analysisType solidModel::analysis() const { return impl_->analysis; }
 int solidModel::nDim() const { return impl_->nDim; }
+const dofMap& solidModel::dofs() const { return impl_->dofs; }
 int solidModel::nDofs() const { return impl_->nDofs(); }
 
 int solidModel::nFreeDofs() const
@@ -704,7 +734,7 @@ matX solidModel::displacement() const
     matX u(m.mesh.nNodes(), m.nDim);
     for (int node = 0; node < m.mesh.nNodes(); ++node)
     {
-        for (int i = 0; i < m.nDim; ++i) u(node, i) = m.U(node*m.nDim + i);
+        for (int i = 0; i < m.nDim; ++i) u(node, i) = m.U(m.dofs.dof(node, i));
     }
     return u;
 }
@@ -777,7 +807,7 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
                     {
                         for (int i = 0; i < nDim; ++i)
                         {
-                            fint[nodes[a]*nDim + i] += fe(a*nDim + i);
+                            fint[m.dofs.dof(nodes[a], i)] += fe(a*nDim + i);
                         }
                     }
                     if (wantTangent && m.inertia && m.alpha != 0)
@@ -1087,16 +1117,16 @@ std::string solidModel::iterationNote(const vecX& residual) const
     if (i < nFree)
     {
         const int d = m.numbering.freeDofs[i];
-        const int node = d/m.nDim;
+        const int node = m.dofs.node(d);
         note += "  max at node " + std::to_string(node)
-          + (d % m.nDim ? " y" : " x") + " (";
+          + (m.dofs.component(d) ? " y" : " x") + " (";
         for (int c = 0; c < m.nDim; ++c)
         {
             char buf[32];
             std::snprintf
             (
                 buf, sizeof(buf), c ? " %.4g" : "%.4g",
-                m.mesh.X(node, c) + m.U(m.nDim*node + c)
+                m.mesh.X(node, c) + m.U(m.dofs.dof(node, c))
             );
             note += buf;
         }
@@ -1281,11 +1311,11 @@ void solidModel::setInertia
         const int n = blk.nodesPerElement*m.nDim;
         for (int p = 0; p < n; ++p)
         {
-            const int gp = nodes[p/m.nDim]*m.nDim + p%m.nDim;
+            const int gp = m.dofs.dof(nodes[p/m.nDim], p%m.nDim);
             for (int q = 0; q < n; ++q)
             {
                 if (Me(p, q) == 0) continue;
-                const int gq = nodes[q/m.nDim]*m.nDim + q%m.nDim;
+                const int gq = m.dofs.dof(nodes[q/m.nDim], q%m.nDim);
                 entries.emplace_back(gp, gq, Me(p, q));
             }
         }
@@ -1391,7 +1421,7 @@ void solidModel::setBodyForce(double rho, vectorTimeFunction g)
         const int* nodes = blk.nodes(m.elemLocal[e]);
         for (int p = 0; p < rowSum.size(); ++p)
         {
-            m.bodyWeights(nodes[p/m.nDim]*m.nDim + p%m.nDim) += rowSum(p);
+            m.bodyWeights(m.dofs.dof(nodes[p/m.nDim], p%m.nDim)) += rowSum(p);
         }
     }
     m.bodyForce = std::move(g);
@@ -1476,7 +1506,7 @@ Eigen::Vector3d solidModel::reaction(const std::vector<int>& nodes) const
     {
         for (int i = 0; i < m.nDim; ++i)
         {
-            const int d = node*m.nDim + i;
+            const int d = m.dofs.dof(node, i);
             R(i) += m.fint(d) - m.fext(d)
               + (m.finertia.size() ? m.finertia(d) : 0.0);
         }

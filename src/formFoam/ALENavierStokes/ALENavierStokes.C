@@ -1385,7 +1385,7 @@ void Foam::ALENavierStokes::evaluateInterface
             const vector& e = itf.faceDirection(j, cc);
             for (std::size_t a = 0; a < nodes.size(); ++a)
             {
-                const label row = 2*nodes[a] + cc;
+                const label row = solid_->dofs().dof(nodes[a], cc);
                 const scalar w = s*fi[j].N[a];
                 K->emplace_back(row, off + ip(P), -w*(S & e));
                 for (label k = 0; k < D_; ++k)
@@ -1400,7 +1400,7 @@ void Foam::ALENavierStokes::evaluateInterface
                     {
                         K->emplace_back
                         (
-                            row, 2*nodes[b] + cb,
+                            row, solid_->dofs().dof(nodes[b], cb),
                             w*cv*eb*fi[j].N[b]*beta
                         );
                     }
@@ -1426,7 +1426,8 @@ void Foam::ALENavierStokes::evaluateInterface
                     {
                         K->emplace_back
                         (
-                            off + iu(e.cell, k), 2*nodes[b] + cb, val
+                            off + iu(e.cell, k),
+                            solid_->dofs().dof(nodes[b], cb), val
                         );
                     }
                 }
@@ -1529,7 +1530,8 @@ void Foam::ALENavierStokes::evaluateInterface
                     if (w == 0) continue;
                     for (std::size_t a = 0; a < pi[i].nodes.size(); ++a)
                     {
-                        coef(local[2*pi[i].nodes[a] + cc]) += w*pi[i].N[a];
+                        const int d = solid_->dofs().dof(pi[i].nodes[a], cc);
+                        coef(local[d]) += w*pi[i].N[a];
                     }
                 }
                 // Fluid rows of the unit's cells; forces on their faces
@@ -1554,7 +1556,9 @@ void Foam::ALENavierStokes::evaluateInterface
                             const auto& fj = fi[j];
                             for (std::size_t a = 0; a < fj.nodes.size(); ++a)
                             {
-                                dF(local[2*fj.nodes[a] + cb]) += fj.N[a]*v;
+                                const int d =
+                                    solid_->dofs().dof(fj.nodes[a], cb);
+                                dF(local[d]) += fj.N[a]*v;
                             }
                         }
                     }

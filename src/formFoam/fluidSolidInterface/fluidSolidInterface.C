@@ -88,6 +88,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
 :
     fluid_(fluid),
     solid_(solid),
+    dofMap_(form::dofMap::of(solid.feMesh())),
     points0_(referencePoints)
 {
     const polyBoundaryMesh& bm = fluid_.boundaryMesh();
@@ -421,8 +422,8 @@ Foam::fluidSolidInterface::points(const form::vecX& U) const
         const solidPoint& sp = pointInterp_[i];
         for (std::size_t a = 0; a < sp.nodes.size(); ++a)
         {
-            dB[0](i) += sp.N[a]*U(2*sp.nodes[a]);
-            dB[1](i) += sp.N[a]*U(2*sp.nodes[a] + 1);
+            dB[0](i) += sp.N[a]*U(dofMap_.dof(sp.nodes[a], 0));
+            dB[1](i) += sp.N[a]*U(dofMap_.dof(sp.nodes[a], 1));
         }
         for (const label p : pointIds_[i])
         {
@@ -455,8 +456,8 @@ Foam::fluidSolidInterface::faceVelocities(const form::vecX& v) const
         scalar vr = 0, vz = 0;
         for (std::size_t a = 0; a < sp.nodes.size(); ++a)
         {
-            vr += sp.N[a]*v(2*sp.nodes[a]);
-            vz += sp.N[a]*v(2*sp.nodes[a] + 1);
+            vr += sp.N[a]*v(dofMap_.dof(sp.nodes[a], 0));
+            vz += sp.N[a]*v(dofMap_.dof(sp.nodes[a], 1));
         }
         u[j] = vr*faceDirection(j, 0) + vz*faceDirection(j, 1);
     }
@@ -478,8 +479,8 @@ void Foam::fluidSolidInterface::addForces
         const scalar Fz = factor*(F[j] & faceDirection(j, 1));
         for (std::size_t a = 0; a < sp.nodes.size(); ++a)
         {
-            f(2*sp.nodes[a]) += sp.N[a]*Fr;
-            f(2*sp.nodes[a] + 1) += sp.N[a]*Fz;
+            f(dofMap_.dof(sp.nodes[a], 0)) += sp.N[a]*Fr;
+            f(dofMap_.dof(sp.nodes[a], 1)) += sp.N[a]*Fz;
         }
     }
 }
@@ -494,8 +495,8 @@ std::vector<int> Foam::fluidSolidInterface::dofs() const
         {
             for (const int a : sp.nodes)
             {
-                s.insert(2*a);
-                s.insert(2*a + 1);
+                s.insert(dofMap_.dof(a, 0));
+                s.insert(dofMap_.dof(a, 1));
             }
         }
     }

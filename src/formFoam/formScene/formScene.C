@@ -586,7 +586,7 @@ Foam::formScene::formScene(Time& runTime)
         form::vecX V0 = form::vecX::Zero(m.nDofs());
         for (const int dof : m.freeDofs())
         {
-            V0(dof) = initialVelocity_[dof % m.nDim()];
+            V0(dof) = initialVelocity_[m.dofs().component(dof)];
         }
         initialiseDynamics(steps_.startTime, V0);
     }

@@ -161,11 +161,13 @@ void Foam::solidRegion::release
     // Something to release: the patch's own constraint in each component
     // named (most of its nodes held; a free patch's end nodes may be held
     // by a neighbouring patch, whose constraint is not the one meant)
-    const int nDim = model_->nDim();
     for (const label c : components)
     {
         label held = 0;
-        for (const int n : nodes) held += model_->constrained(n*nDim + c);
+        for (const int n : nodes)
+        {
+            held += model_->constrained(model_->dofs().dof(n, c));
+        }
         if (2*held < label(nodes.size()))
         {
             FatalIOErrorInFunction(dict)
@@ -197,13 +199,13 @@ void Foam::solidRegion::hold
 {
     const std::vector<int>& nodes = patchNodes(patch, dict);
     const form::vecX U = model_->U();
-    const int nDim = model_->nDim();
+    const form::dofMap dofs = model_->dofs();
     for (const label c : components)
     {
         model_->addNodalConstraint
         (
             nodes, c,
-            [U, nDim, c](int node, double) { return U(node*nDim + c); }
+            [U, dofs, c](int node, double) { return U(dofs.dof(node, c)); }
         );
     }
 }
@@ -235,13 +237,13 @@ void Foam::solidRegion::pin
             << exit(FatalIOError);
     }
     const form::vecX U = model_->U();
-    const int nDim = model_->nDim();
+    const form::dofMap dofs = model_->dofs();
     for (const label c : components)
     {
         model_->addNodalConstraint
         (
             {best}, c,
-            [U, nDim, c](int node, double) { return U(node*nDim + c); }
+            [U, dofs, c](int node, double) { return U(dofs.dof(node, c)); }
         );
     }
 }

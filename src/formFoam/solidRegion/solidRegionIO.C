@@ -217,8 +217,8 @@ bool Foam::solidRegion::readState(const word& timeName)
     form::vecX dU = -model_->U();
     for (int n = 0; n < fe.nNodes(); ++n)
     {
-        dU(2*n) += feU[n].x();
-        dU(2*n + 1) += feU[n].y();
+        dU(model_->dofs().dof(n, 0)) += feU[n].x();
+        dU(model_->dofs().dof(n, 1)) += feU[n].y();
     }
     model_->setDisplacement(model_->U() + dU);
 

@@ -374,6 +374,24 @@ TEST(solidModel, BadInputThrowsInputErrorNamingTheEntry)
     }
     EXPECT_THROW(m.addConstraint({0}, 2), inputError);
     EXPECT_THROW(m.addConstraint({42}, 0), inputError);
+    // Dof counts the solid elements cannot carry (a rotation), or a list
+    // of the wrong length (dofMap.H)
+    for (const bool rotation : {true, false})
+    {
+        feMesh bad = frameMesh();
+        bad.nodeDofs.assign(bad.nNodes(), 2);
+        if (rotation) bad.nodeDofs[0] = 3;
+        else bad.nodeDofs.pop_back();
+        try
+        {
+            solidModel s(bad, analysisType::planeStrain, barMaterial());
+            FAIL() << "no exception";
+        }
+        catch (const inputError& e)
+        {
+            EXPECT_EQ(e.entry(), "mesh");
+        }
+    }
 }
 
 
