@@ -135,7 +135,7 @@ void Foam::formScene::applyActions(const processStep& step, bool apply)
         a.stream() >> names;
         for (const word& c : names)
         {
-            comps.append(planeComponent(c, d, s.analysis()));
+            comps.append(solidComponent(c, d, s.analysis()));
         }
         (void)key;
         return comps;
@@ -221,7 +221,7 @@ void Foam::formScene::applyActions(const processStep& step, bool apply)
             labelList comps;
             for (const word& c : p.get<wordList>("components"))
             {
-                comps.append(planeComponent(c, p, s.analysis()));
+                comps.append(solidComponent(c, p, s.analysis()));
             }
             const point x = p.get<point>("point");
             if (!apply) continue;

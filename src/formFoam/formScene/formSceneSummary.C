@@ -268,7 +268,7 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
     }
     if (type == "toolForce" || type == "toolPosition")
     {
-        const label comp = planeComponent(ed.get<word>("component"), ed, solids_[0].analysis());
+        const label comp = solidComponent(ed.get<word>("component"), ed, solids_[0].analysis());
         const word tool = ed.get<word>("tool");
         return e.scale*
         (
@@ -300,7 +300,7 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         const Eigen::MatrixXd P =
             s.patchPoints(ed.get<word>("patch"), ed, true);
         const Eigen::VectorXd c =
-            P.col(planeComponent(ed.get<word>("component"), ed, solids_[0].analysis()));
+            P.col(solidComponent(ed.get<word>("component"), ed, solids_[0].analysis()));
         value =
             ed.getOrDefault<word>("extreme", "max") == "max"
           ? c.maxCoeff() : c.minCoeff();
@@ -340,7 +340,7 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
     }
     else
     {
-        const label comp = planeComponent(ed.get<word>("component"), ed, solids_[0].analysis());
+        const label comp = solidComponent(ed.get<word>("component"), ed, solids_[0].analysis());
         if (type == "displacement")
         {
             value = s.displacementAt(ed.get<point>("point"), comp, ed);

@@ -267,7 +267,7 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
         {
             for (const word& c : pd.get<wordList>("components"))
             {
-                comps.append(planeComponent(c, pd, analysis_));
+                comps.append(solidComponent(c, pd, analysis_));
             }
         }
         else
