@@ -16,18 +16,6 @@ Description
 namespace form
 {
 
-namespace
-{
-
-//- Second derivatives of the line functions (start, end, middle)
-Eigen::VectorXd lineShapeSecond(int n)
-{
-    Eigen::VectorXd d2 = Eigen::VectorXd::Zero(n);
-    if (n == 3) d2 << 1, 1, -2;
-    return d2;
-}
-
-} // namespace
 
 
 deformableTarget::edgePoint deformableTarget::at

@@ -67,6 +67,54 @@ template struct quadShape<4>;
 template struct quadShape<9>;
 
 
+vecX quadShapeValues(int nNodes, double r, double s)
+{
+    if (nNodes == 4)
+    {
+        quadShape<4>::vecN N;
+        quadShape<4>::matN2 dN;
+        quadShape<4>::eval(r, s, N, dN);
+        return N;
+    }
+    if (nNodes == 9)
+    {
+        quadShape<9>::vecN N;
+        quadShape<9>::matN2 dN;
+        quadShape<9>::eval(r, s, N, dN);
+        return N;
+    }
+    throw std::invalid_argument
+    (
+        "quadShapeValues: " + std::to_string(nNodes) + "-node quad; expected"
+        " 4 or 9"
+    );
+}
+
+
+std::vector<int> quadEdgeNodes(int nNodes, int edge)
+{
+    if ((nNodes != 4 && nNodes != 9) || edge < 0 || edge > 3)
+    {
+        throw std::invalid_argument
+        (
+            "quadEdgeNodes: edge " + std::to_string(edge) + " of a "
+          + std::to_string(nNodes) + "-node quad"
+        );
+    }
+    std::vector<int> nodes{edge, (edge + 1) % 4};
+    if (nNodes == 9) nodes.push_back(4 + edge);
+    return nodes;
+}
+
+
+vecX lineShapeSecond(int n)
+{
+    vecX d2 = vecX::Zero(n);
+    if (n == 3) d2 << 1, 1, -2;
+    return d2;
+}
+
+
 void lineShape(int n, double xi, vecX& N, vecX& dN)
 {
     N.resize(n);

@@ -50,10 +50,7 @@ upQuad<NN, NP>::upQuad
 template<int NN, int NP>
 std::vector<int> upQuad<NN, NP>::edgeNodes(int edge) const
 {
-    // Edge k runs from corner k to corner k+1 (counter-clockwise)
-    std::vector<int> nodes{edge, (edge + 1) % 4};
-    if (NN == 9) nodes.push_back(4 + edge);
-    return nodes;
+    return quadEdgeNodes(NN, edge);
 }
 
 

@@ -11,37 +11,6 @@ Description
 #include "pointLocator.H"
 #include <cmath>
 
-namespace
-{
-// 1D quadratic Lagrange polynomials at nodes -1, 0, +1
-inline void lagrange2(double x, double L[3])
-{
-    L[0] = 0.5*x*(x - 1.0);
-    L[1] = 1.0 - x*x;
-    L[2] = 0.5*x*(x + 1.0);
-}
-}
-
-form::vecX form::quadShapeValues(int nNodes, double r, double s)
-{
-    vecX N(nNodes);
-    if (nNodes == 4)
-    {
-        N << 0.25*(1 - r)*(1 - s), 0.25*(1 + r)*(1 - s),
-             0.25*(1 + r)*(1 + s), 0.25*(1 - r)*(1 + s);
-        return N;
-    }
-    // 9-node: index of each node in the (r, s) tensor grid of -1, 0, 1
-    static const int ir[9] = {0, 2, 2, 0, 1, 2, 1, 0, 1};
-    static const int is[9] = {0, 0, 2, 2, 0, 1, 2, 1, 1};
-    double Lr[3], Ls[3];
-    lagrange2(r, Lr);
-    lagrange2(s, Ls);
-    for (int a = 0; a < 9; ++a) N(a) = Lr[ir[a]]*Ls[is[a]];
-    return N;
-}
-
-
 form::pointLocation form::locatePoint
 (
     const feMesh& mesh,

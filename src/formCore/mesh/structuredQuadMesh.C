@@ -8,6 +8,7 @@ Description
     square, corners counter-clockwise.
 \*---------------------------------------------------------------------------*/
 #include "structuredQuadMesh.H"
+#include "quadShape.H"
 #include "formError.H"
 
 form::feMesh form::structuredQuadMesh
@@ -116,8 +117,10 @@ form::feMesh form::structuredQuadMesh
         f.block = 0;
         f.element = e;
         f.localFace = edge;
-        f.nodes = {n[edge], n[(edge + 1) % 4]};
-        if (order == 2) f.nodes.push_back(n[4 + edge]);
+        for (const int a : quadEdgeNodes(order == 2 ? 9 : 4, edge))
+        {
+            f.nodes.push_back(n[a]);
+        }
         return f;
     };
     for (int ex = 0; ex < nx; ++ex)

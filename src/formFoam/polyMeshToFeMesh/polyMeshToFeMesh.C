@@ -10,6 +10,7 @@ Description
 #include "wedgePolyPatch.H"
 #include "HashTable.H"
 #include "edge.H"
+#include "quadShape.H"
 
 Foam::Vector2D<Foam::scalar>
 Foam::polyMeshToFeMesh::project(const point& p) const
@@ -298,9 +299,10 @@ Foam::polyMeshToFeMesh::polyMeshToFeMesh
             fef.element = celli;
             fef.localFace = localEdge;
             const int* en = block.nodes(celli);
-            fef.nodes.push_back(en[localEdge]);
-            fef.nodes.push_back(en[(localEdge + 1) % 4]);
-            if (nodesPerElement == 9) fef.nodes.push_back(en[4 + localEdge]);
+            for (const int a : form::quadEdgeNodes(nodesPerElement, localEdge))
+            {
+                fef.nodes.push_back(en[a]);
+            }
             for (const int n : fef.nodes) nodeSet.push_back(n);
             faceSet.push_back(fef);
         }

@@ -4,6 +4,7 @@
 #include "quadShape.H"
 #include <gtest/gtest.h>
 #include <random>
+#include <stdexcept>
 
 using namespace form;
 
@@ -103,4 +104,54 @@ TEST(quadShape, lineFunctions)
         EXPECT_LT(((N1 - N2)/(2*h) - dN).norm(), 1e-9);
     }
     EXPECT_THROW(lineShape(4, 0.0, N, dN), std::invalid_argument);
+}
+
+
+// The run-time entry (point locator, output) gives the values of eval
+// exactly; other node counts are an error
+TEST(quadShape, valuesByNodeCountAreEval)
+{
+    quadShape<4>::vecN N4;
+    quadShape<4>::matN2 dN4;
+    quadShape<9>::vecN N9;
+    quadShape<9>::matN2 dN9;
+    for (const double r : {-1.0, -0.3, 0.0, 0.77})
+    {
+        for (const double s : {-0.9, 0.1, 1.0})
+        {
+            quadShape<4>::eval(r, s, N4, dN4);
+            quadShape<9>::eval(r, s, N9, dN9);
+            EXPECT_EQ((quadShapeValues(4, r, s) - N4).norm(), 0);
+            EXPECT_EQ((quadShapeValues(9, r, s) - N9).norm(), 0);
+        }
+    }
+    EXPECT_THROW(quadShapeValues(8, 0, 0), std::invalid_argument);
+}
+
+
+// Edge k: corner k, corner k+1, mid-side 4+k; the line functions of its
+// nodes are the quad's functions restricted to the edge
+TEST(quadShape, edgeNodeTableMatchesTheLineFunctions)
+{
+    EXPECT_EQ(quadEdgeNodes(4, 3), (std::vector<int>{3, 0}));
+    EXPECT_EQ(quadEdgeNodes(9, 1), (std::vector<int>{1, 2, 5}));
+    EXPECT_THROW(quadEdgeNodes(9, 4), std::invalid_argument);
+    EXPECT_THROW(quadEdgeNodes(6, 0), std::invalid_argument);
+    // Edge parameter xi runs from the edge's start to its end corner
+    const double xi = 0.37;
+    for (int edge = 0; edge < 4; ++edge)
+    {
+        const std::vector<int> en = quadEdgeNodes(9, edge);
+        const double r0 = quadShape<9>::nodeR(en[0]);
+        const double s0 = quadShape<9>::nodeS(en[0]);
+        const double r1 = quadShape<9>::nodeR(en[1]);
+        const double s1 = quadShape<9>::nodeS(en[1]);
+        const double r = 0.5*(1 - xi)*r0 + 0.5*(1 + xi)*r1;
+        const double s = 0.5*(1 - xi)*s0 + 0.5*(1 + xi)*s1;
+        const vecX N = quadShapeValues(9, r, s);
+        vecX L, dL;
+        lineShape(3, xi, L, dL);
+        for (int a = 0; a < 3; ++a) EXPECT_NEAR(N(en[a]), L(a), 1e-14);
+        EXPECT_NEAR(N.sum(), 1, 1e-14);
+    }
 }
