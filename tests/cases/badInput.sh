@@ -103,6 +103,8 @@ tryCase "component z in plane strain (summary)" "Unknown component 'z' in .*soli
     "foamDictionary -entry summary/tipDisplacementY/component -set z system/solidSolution >/dev/null"
 tryCase "component z in plane strain (fixedDisplacement)" "Unknown component 'z' in .*0/solid/D.*left" \
     "sed -i 's/^    left .*/    left { type fixedDisplacement; components (z); }/' 0/solid/D"
+tryCase "traction with a z component in plane strain" "Entry 'traction' in .*0/solid/D.*out-of-plane" \
+    "sed -i 's/traction (0 0.0625 0)/traction (0 0.0625 5)/' 0/solid/D"
 tryCase "minDeltaT above deltaT" "Entry 'minDeltaT' in .*solidSolution.* is out of range: 5 > 1" \
     "foamDictionary -entry minDeltaT -add 5 system/solidSolution >/dev/null"
 tryCase "a summary time outside the run" "Entry 'time' of summary entry 'tipDisplacementY' in .*out of range: 5" \

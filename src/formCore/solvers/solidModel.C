@@ -168,6 +168,22 @@ struct solidModel::impl
 
     std::vector<faceRef> locateFaces(const std::string& name) const;
 
+    //- A vector load in the model's coordinates; in 2D its out-of-plane
+    //  component must be zero (inputError naming the load)
+    vec3 inPlane(const vec3& v, const std::string& load) const
+    {
+        if (nDim == 2 && v(2) != 0)
+        {
+            throw inputError
+            (
+                load,
+                "a load with an out-of-plane component ("
+              + std::to_string(v(2)) + ") in a 2D analysis"
+            );
+        }
+        return v;
+    }
+
     //- Gather X and u (nNodes x nDim) of one element
     void gather(int e, matX& X, matX& u) const
     {
@@ -342,7 +358,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
     vecX f;
     if (bodyForce)
     {
-        const Eigen::Vector2d g = bodyForce(t);
+        const vec3 g = inPlane(bodyForce(t), "bodyForce");
         for (int k = 0; k < bodyWeights.size(); ++k)
         {
             fext(k) += bodyWeights(k)*g(dofs.component(k));
@@ -350,7 +366,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
     }
     for (const auto& l : tractions)
     {
-        const Eigen::Vector2d tv = l.t(t);
+        const Eigen::Vector2d tv = inPlane(l.t(t), l.faceSet).head<2>();
         for (const faceRef& face : l.faces)
         {
             gatherFace(face, X, u);

@@ -296,13 +296,23 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
         (
             Function1<vector>::New("traction", pd).ptr()
         );
+        // Components in the FE plane (x y, or r z of a wedge); the third
+        // is out of the plane and must be zero
+        const fileName file = pd.name();
         model_->addTraction
         (
             patch,
-            [tr](double t)
+            [tr, file](double t)
             {
                 const vector v = tr->value(t);
-                return Eigen::Vector2d(v.x(), v.y());
+                if (v.z() != 0)
+                {
+                    FatalErrorInFunction
+                        << "Entry 'traction' in " << file << ": " << v
+                        << " at t = " << t << " has an out-of-plane (z)"
+                        << " component in a 2D analysis" << exit(FatalError);
+                }
+                return form::vec3(v.x(), v.y(), 0);
             }
         );
     }
@@ -643,11 +653,11 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
                 const vector v = g->value(t);
                 if (fe->proj() == polyMeshToFeMesh::projection::planar)
                 {
-                    return Eigen::Vector2d(v.x(), v.y());
+                    return form::vec3(v.x(), v.y(), 0);
                 }
                 const vector axis =
                     fe->toSpace(point(1, 1, 1), Eigen::Vector2d(0, 1));
-                return Eigen::Vector2d(0, v & axis);
+                return form::vec3(0, v & axis, 0);
             }
         );
     }

@@ -424,7 +424,7 @@ void checkQuadTangent(const std::string& element, int nodes)
     model.addConstraint({left[0]}, 0, [](double t) { return -0.1*t; });
     model.addTraction("right", [](double t)
     {
-        return Eigen::Vector2d(0, 0.3*t);
+        return vec3(0, 0.3*t, 0);
     });
     model.addPressure("top", [](double t) { return 0.5*t; });
     model.finalise();

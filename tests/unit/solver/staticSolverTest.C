@@ -50,7 +50,7 @@ solidModel vonMisesTruss(double h, double q, std::shared_ptr<material> m)
     model.addConstraint({0, 2}, 1);
     model.addTraction("load", [q](double t)
     {
-        return Eigen::Vector2d(0, -q*t);
+        return vec3(0, -q*t, 0);
     });
     model.finalise();
     return model;
@@ -70,7 +70,7 @@ solidModel pulledBar(double F, std::shared_ptr<material> m)
     model.addConstraint({0, 1}, 1);
     model.addTraction("load", [F](double t)
     {
-        return Eigen::Vector2d(2*F*t, 0);
+        return vec3(2*F*t, 0, 0);
     });
     model.finalise();
     return model;
@@ -217,7 +217,7 @@ TEST(staticSolver, ExtrapolatingPredictorFindsLinearEquilibriumAtOnce)
         model.addConstraint({0, 1}, 1);
         model.addTraction("load", [](double t)
         {
-            return Eigen::Vector2d(2*5*t, 0);
+            return vec3(2*5*t, 0, 0);
         });
         model.finalise();
         auto solver = linearSolver::New("cholmod");
