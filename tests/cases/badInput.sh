@@ -29,7 +29,7 @@ afterTry()
 }
 
 props=constant/solid/solidProperties
-tryCase "unknown element type" "Entry 'elementType' in .*solidProperties.*: unknown element type 'Q9P2'; valid: Q4 Q4P1 Q9 Q9P3" \
+tryCase "unknown element type" "Entry 'elementType' in .*solidProperties.*: unknown element type 'Q9P2'; valid for planeStrain: Q4 Q4P1 Q9 Q9P3" \
     "foamDictionary -entry elementType -set Q9P2 $props >/dev/null"
 tryCase "unknown material" "Unknown material type 'neoHooke' in .*solidProperties" \
     "foamDictionary -entry material/type -set neoHooke $props >/dev/null"

@@ -82,4 +82,23 @@ std::vector<quadraturePoint2D> gaussLegendreQuad(int n)
     return pts;
 }
 
+std::vector<quadraturePoint3D> gaussLegendreHex(int n)
+{
+    std::vector<double> x, w;
+    gaussLegendre1D(n, x, w);
+    std::vector<quadraturePoint3D> pts;
+    pts.reserve(n*n*n);
+    for (int k = 0; k < n; ++k)
+    {
+        for (int j = 0; j < n; ++j)
+        {
+            for (int i = 0; i < n; ++i)
+            {
+                pts.push_back({x[i], x[j], x[k], w[i]*w[j]*w[k]});
+            }
+        }
+    }
+    return pts;
+}
+
 } // namespace form

@@ -39,10 +39,23 @@ std::unique_ptr<solidElement> solidElement::New
     const auto it = registry().find(type);
     if (it == registry().end())
     {
+        // The names that make an element for this analysis (quads in 2D,
+        // hexahedra in 3D)
+        std::string names;
+        for (const auto& entry : registry())
+        {
+            try
+            {
+                entry.second(analysis);
+                names += (names.empty() ? "" : " ") + entry.first;
+            }
+            catch (const inputError&) {}
+        }
         throw inputError
         (
             "elementType",
-            "unknown element type '" + type + "'; valid: " + validTypes()
+            "unknown element type '" + type + "'; valid for "
+          + analysisTypeName(analysis) + ": " + names
         );
     }
     return it->second(analysis);

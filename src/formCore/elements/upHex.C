@@ -1,0 +1,417 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of upHex.H: the u/p hexahedra (Hex8, Hex27, Hex8P1,
+    Hex27P4): kinematics, internal force and consistent tangent, mass
+    matrix, inf-sup test matrices and averaged results.
+\*---------------------------------------------------------------------------*/
+#include "upHex.H"
+#include "hexShape.H"
+#include "formError.H"
+#include <cmath>
+
+namespace form
+{
+
+template<int NN, int NP>
+upHex<NN, NP>::upHex
+(
+    const std::string& name,
+    int nGauss,
+    analysisType analysis
+)
+:
+    name_(name),
+    nGauss_(nGauss),
+    qp_(gaussLegendreHex(nGauss))
+{
+    if (analysis != analysisType::solid3D)
+    {
+        throw inputError
+        (
+            "analysisType",
+            "element type " + name + " is a hexahedron: it needs"
+            " analysisType solid3D, not " + analysisTypeName(analysis)
+        );
+    }
+}
+
+
+template<int NN, int NP>
+std::vector<int> upHex<NN, NP>::edgeNodes(int face) const
+{
+    return hexFaceNodes(NN, face);
+}
+
+
+template<int NN, int NP>
+void upHex<NN, NP>::checkSize(const matX& A, const char* what) const
+{
+    if (A.rows() != NN || A.cols() != 3)
+    {
+        throw numericalError
+        (
+            name_ + ": " + what + " is " + std::to_string(A.rows()) + "x"
+          + std::to_string(A.cols()) + ", expected " + std::to_string(NN)
+          + "x3 (nodes x dimensions)"
+        );
+    }
+}
+
+
+template<int NN, int NP>
+typename upHex<NN, NP>::pointGeometry upHex<NN, NP>::geometry
+(
+    const matX& X,
+    const quadraturePoint3D& q,
+    int elementId
+) const
+{
+    pointGeometry g;
+    matN3 dNdr;
+    hexShape<NN>::eval(q.r, q.s, q.t, g.N, dNdr);
+
+    // J0(i, j) = dX_i/dr_j; dN/dX = dN/dr J0^-1 (Bathe FEP sec. 5.3)
+    const mat3 J0 = X.transpose()*dNdr;
+    const double detJ0 = J0.determinant();
+    if (!(detJ0 > 0))
+    {
+        throw numericalError
+        (
+            "element " + std::to_string(elementId) + " (" + name_
+          + "): reference Jacobian det J0 = " + formatNumber(detJ0)
+          + " <= 0; the mesh cell is inverted or degenerate"
+        );
+    }
+    g.dNdX = dNdr*J0.inverse();
+    g.dV = q.w*detJ0;
+    return g;
+}
+
+
+template<int NN, int NP>
+typename upHex<NN, NP>::vecP upHex<NN, NP>::pressureShape
+(
+    const quadraturePoint3D& q
+)
+{
+    vecP Np;
+    if constexpr (NP == 4) Np << 1, q.r, q.s, q.t;
+    else Np.setOnes();
+    return Np;
+}
+
+
+template<int NN, int NP>
+void upHex<NN, NP>::kinematics
+(
+    const matX& X,
+    const matX& u,
+    bool linear,
+    double kappa,
+    int elementId,
+    elementKinematics& k
+) const
+{
+    checkSize(X, "X");
+    checkSize(u, "u");
+    const matN3 uN = u;
+    for (std::size_t q = 0; q < qp_.size(); ++q)
+    {
+        pointKinematics& pk = k.pt[q];
+        pk.g = geometry(X, qp_[q], elementId);
+        pk.Np = pressureShape(qp_[q]);
+        pk.F = mat3::Identity() + uN.transpose()*pk.g.dNdX;
+        pk.J = pk.F.determinant();
+        if (linear)
+        {
+            pk.dNdx = pk.g.dNdX;
+            pk.lnJ = pk.F.trace() - 3;    // tr(eps)
+        }
+        else
+        {
+            if (!(pk.J > 0))
+            {
+                throw inversionError
+                (
+                    elementId,
+                    "element " + std::to_string(elementId) + " (" + name_
+                  + "): det F = " + formatNumber(pk.J)
+                  + " <= 0 at quadrature point " + std::to_string(q)
+                );
+            }
+            pk.dNdx = pk.g.dNdX*pk.F.inverse();   // dN/dx = dN/dX F^-1
+            pk.lnJ = std::log(pk.J);
+        }
+
+        // Voigt rows (xx, yy, zz, xy, yz, xz), engineering shears
+        pk.B.setZero(6, nDof);
+        for (int a = 0; a < NN; ++a)
+        {
+            const double gx = pk.dNdx(a, 0);
+            const double gy = pk.dNdx(a, 1);
+            const double gz = pk.dNdx(a, 2);
+            pk.B(0, 3*a) = gx;
+            pk.B(1, 3*a + 1) = gy;
+            pk.B(2, 3*a + 2) = gz;
+            pk.B(3, 3*a) = gy;
+            pk.B(3, 3*a + 1) = gx;
+            pk.B(4, 3*a + 1) = gz;
+            pk.B(4, 3*a + 2) = gy;
+            pk.B(5, 3*a) = gz;
+            pk.B(5, 3*a + 2) = gx;
+        }
+    }
+
+    if constexpr (NP > 0)
+    {
+        // L2 projection of kappa ln J onto the pressure space (material.H)
+        vecP rhs = vecP::Zero();
+        for (std::size_t q = 0; q < qp_.size(); ++q)
+        {
+            const pointKinematics& pk = k.pt[q];
+            const Eigen::RowVectorXd div =
+                pk.B.template topRows<3>().colwise().sum();
+            k.Mp += pk.Np*pk.Np.transpose()*pk.g.dV;
+            rhs += pk.Np*(pk.lnJ*pk.g.dV);
+            k.Kpu += pk.Np*div*pk.g.dV;
+        }
+        k.pe = kappa*k.Mp.ldlt().solve(rhs);
+    }
+}
+
+
+template<int NN, int NP>
+bool upHex<NN, NP>::compute
+(
+    const matX& X,
+    const matX& u,
+    const material& mat,
+    const std::vector<materialState>& committed,
+    std::vector<materialState>& trial,
+    vecX& fint,
+    matX* K,
+    int elementId
+) const
+{
+    const int nQ = nQuadrature();
+    if (int(committed.size()) != nQ)
+    {
+        throw numericalError
+        (
+            "element " + std::to_string(elementId) + " (" + name_ + "): "
+          + std::to_string(committed.size()) + " material states given, "
+          + std::to_string(nQ) + " expected"
+        );
+    }
+    trial.resize(nQ);
+
+    const bool linear = mat.geometricallyLinear();
+    const double kappa = mat.bulkModulus();
+    elementKinematics k;
+    kinematics(X, u, linear, kappa, elementId, k);
+
+    // 1 = m, I_sym = diag(1, 1, 1, 1/2, 1/2, 1/2) in Voigt form
+    vec6 m;
+    m << 1, 1, 1, 0, 0, 0;
+    vec6 iSym;
+    iSym << 1, 1, 1, 0.5, 0.5, 0.5;
+
+    vecX f = vecX::Zero(nDof);
+    matX Kt;
+    if (K) Kt.setZero(nDof, nDof);
+
+    for (int q = 0; q < nQ; ++q)
+    {
+        const pointKinematics& pk = k.pt[q];
+        mat3 tauDev;
+        mat6 cDev;
+        if (!mat.deviatoric(pk.F, committed[q], trial[q], tauDev, cDev))
+        {
+            return false;
+        }
+        const double p = pressure(k, q, kappa);
+        const mat3 tau = tauDev + p*mat3::Identity();
+        const double dV = pk.g.dV;
+
+        f += pk.B.transpose()*toVoigtStress(tau)*dV;
+        if (!K) continue;
+
+        mat6 c = cDev;
+        if (NP == 0) c += kappa*m*m.transpose();
+        if (!linear) c.diagonal() -= 2*p*iSym;
+        Kt.noalias() += pk.B.transpose()*(c*pk.B)*dV;
+
+        if (!linear)
+        {
+            // Geometric stiffness G^T (tau (x) I) G
+            const Eigen::Matrix<double, NN, NN> kg =
+                pk.dNdx*tau*pk.dNdx.transpose()*dV;
+            for (int a = 0; a < NN; ++a)
+            {
+                for (int b = 0; b < NN; ++b)
+                {
+                    for (int i = 0; i < 3; ++i) Kt(3*a + i, 3*b + i) += kg(a, b);
+                }
+            }
+        }
+    }
+
+    fint = f;
+    if (K)
+    {
+        if constexpr (NP > 0)
+        {
+            // Static condensation of p_e (solidElement.H)
+            Kt += kappa*k.Kpu.transpose()*k.Mp.ldlt().solve(k.Kpu);
+        }
+        *K = std::move(Kt);
+    }
+    return true;
+}
+
+
+template<int NN, int NP>
+matX upHex<NN, NP>::massMatrix(const matX& X) const
+{
+    // One more point per direction than the stiffness rule: exact for
+    // N_a N_b on parallelepipeds
+    checkSize(X, "X");
+    matX M = matX::Zero(nDof, nDof);
+    for (const quadraturePoint3D& q : gaussLegendreHex(nGauss_ + 1))
+    {
+        const pointGeometry g = geometry(X, q, -1);
+        const Eigen::Matrix<double, NN, NN> mq = g.N*g.N.transpose()*g.dV;
+        for (int a = 0; a < NN; ++a)
+        {
+            for (int b = 0; b < NN; ++b)
+            {
+                for (int i = 0; i < 3; ++i) M(3*a + i, 3*b + i) += mq(a, b);
+            }
+        }
+    }
+    return M;
+}
+
+
+template<int NN, int NP>
+infSupMatrices upHex<NN, NP>::infSup(const matX& X) const
+{
+    checkSize(X, "X");
+    infSupMatrices s;
+    s.Kpu = matX::Zero(NP, nDof);
+    s.Mp = matX::Zero(NP, NP);
+    s.T = matX::Zero(nDof, nDof);
+    for (const quadraturePoint3D& q : qp_)
+    {
+        const pointGeometry g = geometry(X, q, -1);
+        const double dV = g.dV;
+        // H1: grad u : grad u + u . u
+        const Eigen::Matrix<double, NN, NN> t =
+            (g.dNdX*g.dNdX.transpose() + g.N*g.N.transpose())*dV;
+        Eigen::RowVectorXd div(nDof);
+        for (int a = 0; a < NN; ++a)
+        {
+            for (int i = 0; i < 3; ++i)
+            {
+                div(3*a + i) = g.dNdX(a, i);
+                for (int b = 0; b < NN; ++b) s.T(3*a + i, 3*b + i) += t(a, b);
+            }
+        }
+        if constexpr (NP > 0)
+        {
+            const vecP Np = pressureShape(q);
+            s.Kpu += Np*div*dV;
+            s.Mp += Np*Np.transpose()*dV;
+        }
+    }
+    return s;
+}
+
+
+template<int NN, int NP>
+elementResult upHex<NN, NP>::result
+(
+    const matX& X,
+    const matX& u,
+    const material& mat,
+    const std::vector<materialState>& states
+) const
+{
+    const int nQ = nQuadrature();
+    if (int(states.size()) != nQ)
+    {
+        throw numericalError
+        (
+            name_ + " result: " + std::to_string(states.size())
+          + " material states given, " + std::to_string(nQ) + " expected"
+        );
+    }
+    const bool linear = mat.geometricallyLinear();
+    const double kappa = mat.bulkModulus();
+    elementKinematics k;
+    kinematics(X, u, linear, kappa, -1, k);
+
+    // Averages weighted by the reference volume of each point
+    elementResult res;
+    res.minDetF = k.pt[0].J;
+    double volume = 0;
+    for (int q = 0; q < nQ; ++q)
+    {
+        const pointKinematics& pk = k.pt[q];
+        mat3 tauDev;
+        mat6 cDev;
+        materialState trial;
+        if (!mat.deviatoric(pk.F, states[q], trial, tauDev, cDev))
+        {
+            throw numericalError
+            (
+                name_ + " result: material update failed at point "
+              + std::to_string(q)
+            );
+        }
+        const double p = pressure(k, q, kappa);
+        const double J = linear ? 1.0 : pk.J;
+        const double dV = pk.g.dV;
+        res.cauchy += (tauDev + p*mat3::Identity())/J*dV;
+        res.pressure += -p/J*dV;
+        res.equivalentStrain += mat.equivalentStrain(pk.F, states[q])*dV;
+        res.minDetF = std::min(res.minDetF, pk.J);
+        volume += dV;
+    }
+    res.cauchy /= volume;
+    res.pressure /= volume;
+    res.equivalentStrain /= volume;
+    return res;
+}
+
+
+// * * * * * * * * * * * * * * Instantiation  * * * * * * * * * * * * * * * //
+
+template class upHex<8, 0>;
+template class upHex<27, 0>;
+template class upHex<8, 1>;
+template class upHex<27, 4>;
+
+namespace
+{
+template<int NN, int NP>
+bool addHex(const std::string& name, int nGauss)
+{
+    solidElement::registry()[name] = [name, nGauss](analysisType a)
+        -> std::unique_ptr<solidElement>
+    {
+        return std::make_unique<upHex<NN, NP>>(name, nGauss, a);
+    };
+    return true;
+}
+
+const bool hexesAdded =
+    addHex<8, 0>("Hex8", 2)
+ && addHex<27, 0>("Hex27", 3)
+ && addHex<8, 1>("Hex8P1", 2)
+ && addHex<27, 4>("Hex27P4", 3);
+} // anonymous namespace
+
+} // namespace form
