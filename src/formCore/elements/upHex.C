@@ -8,6 +8,7 @@ Description
 \*---------------------------------------------------------------------------*/
 #include "upHex.H"
 #include "hexShape.H"
+#include "upElementTools.H"
 #include "formError.H"
 #include <cmath>
 
@@ -166,18 +167,7 @@ void upHex<NN, NP>::kinematics
 
     if constexpr (NP > 0)
     {
-        // L2 projection of kappa ln J onto the pressure space (material.H)
-        vecP rhs = vecP::Zero();
-        for (std::size_t q = 0; q < qp_.size(); ++q)
-        {
-            const pointKinematics& pk = k.pt[q];
-            const Eigen::RowVectorXd div =
-                pk.B.template topRows<3>().colwise().sum();
-            k.Mp += pk.Np*pk.Np.transpose()*pk.g.dV;
-            rhs += pk.Np*(pk.lnJ*pk.g.dV);
-            k.Kpu += pk.Np*div*pk.g.dV;
-        }
-        k.pe = kappa*k.Mp.ldlt().solve(rhs);
+        projectPressure(k, int(qp_.size()), kappa);
     }
 }
 
@@ -196,15 +186,11 @@ bool upHex<NN, NP>::compute
 ) const
 {
     const int nQ = nQuadrature();
-    if (int(committed.size()) != nQ)
-    {
-        throw numericalError
-        (
-            "element " + std::to_string(elementId) + " (" + name_ + "): "
-          + std::to_string(committed.size()) + " material states given, "
-          + std::to_string(nQ) + " expected"
-        );
-    }
+    checkStateCount
+    (
+        "element " + std::to_string(elementId) + " (" + name_ + ")",
+        committed.size(), nQ
+    );
     trial.resize(nQ);
 
     const bool linear = mat.geometricallyLinear();
@@ -340,50 +326,15 @@ elementResult upHex<NN, NP>::result
 ) const
 {
     const int nQ = nQuadrature();
-    if (int(states.size()) != nQ)
-    {
-        throw numericalError
-        (
-            name_ + " result: " + std::to_string(states.size())
-          + " material states given, " + std::to_string(nQ) + " expected"
-        );
-    }
-    const bool linear = mat.geometricallyLinear();
+    checkStateCount(name_ + " result", states.size(), nQ);
     const double kappa = mat.bulkModulus();
     elementKinematics k;
-    kinematics(X, u, linear, kappa, -1, k);
-
-    // Averages weighted by the reference volume of each point
-    elementResult res;
-    res.minDetF = k.pt[0].J;
-    double volume = 0;
-    for (int q = 0; q < nQ; ++q)
-    {
-        const pointKinematics& pk = k.pt[q];
-        mat3 tauDev;
-        mat6 cDev;
-        materialState trial;
-        if (!mat.deviatoric(pk.F, states[q], trial, tauDev, cDev))
-        {
-            throw numericalError
-            (
-                name_ + " result: material update failed at point "
-              + std::to_string(q)
-            );
-        }
-        const double p = pressure(k, q, kappa);
-        const double J = linear ? 1.0 : pk.J;
-        const double dV = pk.g.dV;
-        res.cauchy += (tauDev + p*mat3::Identity())/J*dV;
-        res.pressure += -p/J*dV;
-        res.equivalentStrain += mat.equivalentStrain(pk.F, states[q])*dV;
-        res.minDetF = std::min(res.minDetF, pk.J);
-        volume += dV;
-    }
-    res.cauchy /= volume;
-    res.pressure /= volume;
-    res.equivalentStrain /= volume;
-    return res;
+    kinematics(X, u, mat.geometricallyLinear(), kappa, -1, k);
+    return averageResult
+    (
+        name_, k, nQ, mat, states,
+        [&](int q) { return pressure(k, q, kappa); }
+    );
 }
 
 

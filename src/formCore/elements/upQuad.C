@@ -8,6 +8,7 @@ Description
 \*---------------------------------------------------------------------------*/
 #include "upQuad.H"
 #include "quadShape.H"
+#include "upElementTools.H"
 #include "formError.H"
 #include <cmath>
 #include <sstream>
@@ -193,19 +194,7 @@ void upQuad<NN, NP>::kinematics
 
     if constexpr (NP > 0)
     {
-        // L2 projection of kappa ln J onto the pressure space (material.H)
-        vecP rhs = vecP::Zero();
-        for (std::size_t q = 0; q < qp_.size(); ++q)
-        {
-            const pointKinematics& pk = k.pt[q];
-            // div(N_u) = 1^T B_x: sum of the normal-strain rows
-            const Eigen::Matrix<double, 1, nDof> div =
-                pk.B.template topRows<3>().colwise().sum();
-            k.Mp += pk.Np*pk.Np.transpose()*pk.g.dV;
-            rhs += pk.Np*(pk.lnJ*pk.g.dV);
-            k.Kpu += pk.Np*div*pk.g.dV;
-        }
-        k.pe = kappa*k.Mp.ldlt().solve(rhs);
+        projectPressure(k, int(qp_.size()), kappa);
     }
 }
 
@@ -224,15 +213,11 @@ bool upQuad<NN, NP>::compute
 ) const
 {
     const int nQ = nQuadrature();
-    if (int(committed.size()) != nQ)
-    {
-        throw numericalError
-        (
-            "element " + std::to_string(elementId) + " (" + name_ + "): "
-          + std::to_string(committed.size()) + " material states given, "
-          + std::to_string(nQ) + " expected"
-        );
-    }
+    checkStateCount
+    (
+        "element " + std::to_string(elementId) + " (" + name_ + ")",
+        committed.size(), nQ
+    );
     trial.resize(nQ);
 
     const bool linear = mat.geometricallyLinear();

@@ -6,6 +6,7 @@ Description
     internal force and tangent are in upQuad.C).
 \*---------------------------------------------------------------------------*/
 #include "upQuad.H"
+#include "upElementTools.H"
 #include "formError.H"
 
 namespace form
@@ -85,50 +86,15 @@ elementResult upQuad<NN, NP>::result
 ) const
 {
     const int nQ = nQuadrature();
-    if (int(states.size()) != nQ)
-    {
-        throw numericalError
-        (
-            name_ + " result: " + std::to_string(states.size())
-          + " material states given, " + std::to_string(nQ) + " expected"
-        );
-    }
-    const bool linear = mat.geometricallyLinear();
+    checkStateCount(name_ + " result", states.size(), nQ);
     const double kappa = mat.bulkModulus();
     elementKinematics k;
-    kinematics(X, u, linear, kappa, -1, k);
-
-    // Averages weighted by the reference volume of each point
-    elementResult res;
-    res.minDetF = k.pt[0].J;
-    double volume = 0;
-    for (int q = 0; q < nQ; ++q)
-    {
-        const pointKinematics& pk = k.pt[q];
-        mat3 tauDev;
-        mat6 cDev;
-        materialState trial;
-        if (!mat.deviatoric(pk.F, states[q], trial, tauDev, cDev))
-        {
-            throw numericalError
-            (
-                name_ + " result: material update failed at point "
-              + std::to_string(q)
-            );
-        }
-        const double p = pressure(k, q, kappa);
-        const double J = linear ? 1.0 : pk.J;
-        const double dV = pk.g.dV;
-        res.cauchy += (tauDev + p*mat3::Identity())/J*dV;
-        res.pressure += -p/J*dV;
-        res.equivalentStrain += mat.equivalentStrain(pk.F, states[q])*dV;
-        res.minDetF = std::min(res.minDetF, pk.J);
-        volume += dV;
-    }
-    res.cauchy /= volume;
-    res.pressure /= volume;
-    res.equivalentStrain /= volume;
-    return res;
+    kinematics(X, u, mat.geometricallyLinear(), kappa, -1, k);
+    return averageResult
+    (
+        name_, k, nQ, mat, states,
+        [&](int q) { return pressure(k, q, kappa); }
+    );
 }
 
 
