@@ -1,0 +1,258 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    solidModel: constraints (fixed, prescribed, released) and loads
+    (tractions, follower pressures, body force), and their assembly into
+    f_ext and the load stiffness (see solidModel.H).
+\*---------------------------------------------------------------------------*/
+#include "solidModelImpl.H"
+#include "contactModel.H"
+#include "coupledBlock.H"
+#include "formError.H"
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace form
+{
+
+void solidModel::impl::assembleExternal(double t, bool wantTangent)
+{
+    matX X, u, K;
+    vecX f;
+    if (bodyForce)
+    {
+        const vec3 g = inPlane(bodyForce(t), "bodyForce");
+        for (int k = 0; k < bodyWeights.size(); ++k)
+        {
+            fext(k) += bodyWeights(k)*g(dofs.component(k));
+        }
+    }
+    for (const auto& l : tractions)
+    {
+        const Eigen::Vector2d tv = inPlane(l.t(t), l.faceSet).head<2>();
+        for (const faceRef& face : l.faces)
+        {
+            gatherFace(face, X, u);
+            f = edgeLoad::deadTraction(X, tv, analysis);
+            for (std::size_t a = 0; a < face.nodes.size(); ++a)
+            {
+                for (int i = 0; i < nDim; ++i)
+                {
+                    fext(dofs.dof(face.nodes[a], i)) += f(a*nDim + i);
+                }
+            }
+        }
+    }
+
+    double* ff = Kff.valuePtr();
+    double* fp = Kfp.valuePtr();
+    for (const auto& l : pressures)
+    {
+        const double p = l.p(t);
+        for (const faceRef& face : l.faces)
+        {
+            gatherFace(face, X, u);
+            edgeLoad::followerPressure
+            (
+                X, u, p, analysis, f, wantTangent ? &K : nullptr
+            );
+            const int nf = int(face.nodes.size());
+            for (int a = 0; a < nf; ++a)
+            {
+                for (int i = 0; i < nDim; ++i)
+                {
+                    fext(dofs.dof(face.nodes[a], i)) += f(a*nDim + i);
+                }
+            }
+            if (!wantTangent) continue;
+
+            const int nE = pattern.nElementDofs(face.element);
+            const int* code = pattern.scatter(face.element);
+            for (int b = 0; b < nf; ++b)
+            {
+                for (int j = 0; j < nDim; ++j)
+                {
+                    const int lb = face.localNodes[b]*nDim + j;
+                    for (int a = 0; a < nf; ++a)
+                    {
+                        for (int i = 0; i < nDim; ++i)
+                        {
+                            const int la = face.localNodes[a]*nDim + i;
+                            const int c = code[la + nE*lb];
+                            const double v = K(a*nDim + i, b*nDim + j);
+                            if (c >= 0) ff[c] += v;
+                            else if (c <= -2) fp[-2 - c] += v;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+
+void solidModel::addConstraint
+(
+    const std::vector<int>& nodes,
+    int component,
+    timeFunction value
+)
+{
+    impl& m = *impl_;
+    if (component < 0 || component >= m.nDim)
+    {
+        throw inputError
+        (
+            "component",
+            "constraint component " + std::to_string(component)
+          + " out of range 0.." + std::to_string(m.nDim - 1)
+        );
+    }
+    for (int node : nodes)
+    {
+        if (node < 0 || node >= m.mesh.nNodes())
+        {
+            throw inputError
+            (
+                "nodes",
+                "constraint on non-existent node " + std::to_string(node)
+            );
+        }
+        m.constraints[m.dofs.dof(node, component)] = value;
+    }
+    if (m.finalised) m.build();
+}
+
+
+void solidModel::addNodalConstraint
+(
+    const std::vector<int>& nodes,
+    int component,
+    const std::function<double(int, double)>& value
+)
+{
+    impl& m = *impl_;
+    const bool wasFinalised = m.finalised;
+    m.finalised = false;
+    for (int node : nodes)
+    {
+        addConstraint
+        (
+            {node},
+            component,
+            [value, node](double t) { return value(node, t); }
+        );
+    }
+    m.finalised = wasFinalised;
+    if (m.finalised) m.build();
+}
+
+
+void solidModel::releaseConstraint
+(
+    const std::vector<int>& nodes,
+    int component,
+    double t0,
+    double t1
+)
+{
+    impl& m = *impl_;
+    if (!(t1 > t0))
+    {
+        throw inputError("endTime", "release ramp needs t1 > t0");
+    }
+    // Reaction at the last (converged) evaluation: f_int - f_ext
+    if (m.fint.size() == m.nDofs())
+    {
+        for (int node : nodes)
+        {
+            const int d = m.dofs.dof(node, component);
+            if (node >= 0 && node < m.mesh.nNodes() && m.constraints.count(d))
+            {
+                m.released.push_back({d, m.fint(d) - m.fext(d), t0, t1});
+            }
+        }
+    }
+    releaseConstraint(nodes, component);
+}
+
+
+bool solidModel::constrained(int dof) const
+{
+    return impl_->constraints.count(dof) > 0;
+}
+
+
+void solidModel::addTraction(const std::string& faceSet, vectorTimeFunction t)
+{
+    impl& m = *impl_;
+    m.faceSet(faceSet);
+    m.tractions.push_back({faceSet, std::move(t), {}});
+    if (m.finalised) m.tractions.back().faces = m.locateFaces(faceSet);
+}
+
+
+void solidModel::addPressure(const std::string& faceSet, timeFunction p)
+{
+    impl& m = *impl_;
+    m.faceSet(faceSet);
+    m.pressures.push_back({faceSet, std::move(p), {}});
+    if (m.finalised) m.pressures.back().faces = m.locateFaces(faceSet);
+}
+
+
+void solidModel::releaseConstraint(const std::vector<int>& nodes, int component)
+{
+    impl& m = *impl_;
+    if (component < 0 || component >= m.nDim)
+    {
+        throw inputError
+        (
+            "component",
+            "released component " + std::to_string(component)
+          + " out of range 0.." + std::to_string(m.nDim - 1)
+        );
+    }
+    for (int node : nodes)
+    {
+        if (node >= 0 && node < m.mesh.nNodes())
+        {
+            m.constraints.erase(m.dofs.dof(node, component));
+        }
+    }
+    if (m.finalised) m.build();
+}
+
+
+void solidModel::setBodyForce(double rho, vectorTimeFunction g)
+{
+    impl& m = *impl_;
+    m.requireFinalised("setBodyForce");
+    if (!(rho > 0) || !std::isfinite(rho))
+    {
+        throw inputError
+        (
+            "rho", "body force: the density must be positive, got "
+          + std::to_string(rho)
+        );
+    }
+    m.bodyWeights.setZero(m.nDofs());
+    matX X, u;
+    for (int e = 0; e < int(m.elemBlock.size()); ++e)
+    {
+        const impl::blockData& b = m.blocks[m.elemBlock[e]];
+        const elementBlock& blk = m.mesh.blocks[m.elemBlock[e]];
+        m.gather(e, X, u);
+        const vecX rowSum = rho*b.kernel->massMatrix(X).rowwise().sum();
+        const int* nodes = blk.nodes(m.elemLocal[e]);
+        for (int p = 0; p < rowSum.size(); ++p)
+        {
+            m.bodyWeights(m.dofs.dof(nodes[p/m.nDim], p%m.nDim)) += rowSum(p);
+        }
+    }
+    m.bodyForce = std::move(g);
+}
+
+} // namespace form
