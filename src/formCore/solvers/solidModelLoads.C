@@ -31,11 +31,14 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
     }
     for (const auto& l : tractions)
     {
-        const Eigen::Vector2d tv = inPlane(l.t(t), l.faceSet).head<2>();
+        const vec3 tv = inPlane(l.t(t), l.faceSet);
         for (const faceRef& face : l.faces)
         {
             gatherFace(face, X, u);
-            f = edgeLoad::deadTraction(X, tv, analysis);
+            f =
+                nDim == 3
+              ? faceLoad::deadTraction(X, tv)
+              : edgeLoad::deadTraction(X, tv.head<2>(), analysis);
             for (std::size_t a = 0; a < face.nodes.size(); ++a)
             {
                 for (int i = 0; i < nDim; ++i)

@@ -1,0 +1,101 @@
+// The solid model in 3D (issue 21): a Hex27P4 cube [0,1]^3 held on its
+// three symmetry planes x = 0, y = 0, z = 0 (each in its normal direction)
+// and pulled by a dead traction sigma on x = 1, linear elastic: the
+// uniaxial solution u = sigma/E (x, -nu y, -nu z) lies in the element's
+// space, so one static step reproduces it to round-off. It exercises the
+// 3D path of the model: the dof map with 3 dofs per node, face sets of
+// hexahedra (hexFaceNodes), the face traction (faceLoad), the constraints
+// and the static solver. And faceLoad's consistent nodal forces on a
+// flat face: 1/36, 4/36, 16/36 of t A for the 9-node face, 1/4 for the
+// 4-node one.
+#include "staticSolver.H"
+#include "hexShape.H"
+#include "quadShape.H"
+#include "formError.H"
+#include <gtest/gtest.h>
+#include <sstream>
+
+using namespace form;
+
+TEST(faceLoad, consistentForcesOnAFlatFace)
+{
+    // A 2 x 3 rectangle in the plane through (0.1, 0.2, 0.3) spanned by two
+    // orthonormal vectors, traction t
+    const vec3 o(0.1, 0.2, 0.3);
+    const vec3 e1 = vec3(1, 2, 2).normalized();
+    const vec3 e2 = vec3(2, 1, -2).normalized();
+    const vec3 t(0.4, -1.1, 2.5);
+    const double A = 6;
+    for (const int n : {4, 9})
+    {
+        matX X(n, 3);
+        for (int a = 0; a < n; ++a)
+        {
+            const double r = quadShape<9>::nodeR(a), s = quadShape<9>::nodeS(a);
+            X.row(a) = (o + (1 + r)*e1 + 1.5*(1 + s)*e2).transpose();
+        }
+        const vecX f = faceLoad::deadTraction(X, t);
+        for (int a = 0; a < n; ++a)
+        {
+            const double share =
+                n == 4 ? 0.25 : (a < 4 ? 1.0/36 : a < 8 ? 4.0/36 : 16.0/36);
+            EXPECT_LT((f.segment<3>(3*a) - share*A*t).norm(), 1e-13) << n << " " << a;
+        }
+    }
+    EXPECT_THROW(faceLoad::deadTraction(matX::Zero(3, 3), t), numericalError);
+}
+
+
+TEST(solid3D, uniaxialTractionOnAHex27P4Cube)
+{
+    feMesh mesh;
+    mesh.nDim = 3;
+    mesh.X.resize(27, 3);
+    for (int a = 0; a < 27; ++a)
+    {
+        mesh.X.row(a) = 0.5*(hexShape<27>::node(a) + vec3::Ones()).transpose();
+    }
+    elementBlock b;
+    b.name = "cube";
+    b.elementType = "Hex27P4";
+    b.materialName = "steel";
+    b.nodesPerElement = 27;
+    for (int a = 0; a < 27; ++a) b.connectivity.push_back(a);
+    mesh.blocks.push_back(b);
+    // Faces r = -1, +1, s = -1, t = -1 of the element: x = 0, x = 1, y = 0,
+    // z = 0
+    const auto nodesOf = [](int face) { return hexFaceNodes(27, face); };
+    mesh.faceSets["right"].push_back({0, 0, 1, nodesOf(1)});
+    mesh.nodeSets["x0"] = nodesOf(0);
+    mesh.nodeSets["y0"] = nodesOf(2);
+    mesh.nodeSets["z0"] = nodesOf(4);
+
+    const double E = 200, nu = 0.3, sigma = 10;
+    std::map<std::string, std::shared_ptr<material>> mats;
+    mats["steel"] = material::New("linearElastic", {{"E", E}, {"nu", nu}});
+    solidModel model(mesh, analysisType::solid3D, mats);
+    model.addConstraint(mesh.nodeSets["x0"], 0);
+    model.addConstraint(mesh.nodeSets["y0"], 1);
+    model.addConstraint(mesh.nodeSets["z0"], 2);
+    model.addTraction("right", [sigma](double t) { return vec3(sigma*t, 0, 0); });
+    model.finalise();
+    EXPECT_EQ(model.nDofs(), 81);
+
+    auto solver = linearSolver::New("cholmod");
+    stepControls steps;
+    steps.deltaT = 1;
+    std::ostringstream log;
+    staticSolver(model, *solver, newtonControls(), steps, log).run(nullptr);
+
+    const matX u = model.displacement();
+    double err = 0;
+    for (int a = 0; a < 27; ++a)
+    {
+        const vec3 X = mesh.X.row(a).transpose();
+        const vec3 exact = sigma/E*vec3(X(0), -nu*X(1), -nu*X(2));
+        err = std::max(err, (u.row(a).transpose() - exact).norm());
+    }
+    EXPECT_LT(err, 1e-12) << log.str();
+    // The reaction on x = 0 balances the applied force sigma * 1
+    EXPECT_NEAR(model.reaction(mesh.nodeSets["x0"])(0), -sigma, 1e-10);
+}
