@@ -49,15 +49,7 @@ std::vector<int> upHex<NN, NP>::edgeNodes(int face) const
 template<int NN, int NP>
 void upHex<NN, NP>::checkSize(const matX& A, const char* what) const
 {
-    if (A.rows() != NN || A.cols() != 3)
-    {
-        throw numericalError
-        (
-            name_ + ": " + what + " is " + std::to_string(A.rows()) + "x"
-          + std::to_string(A.cols()) + ", expected " + std::to_string(NN)
-          + "x3 (nodes x dimensions)"
-        );
-    }
+    checkNodeMatrix(name_, A, what, NN, 3);
 }
 
 

@@ -58,15 +58,7 @@ std::vector<int> upQuad<NN, NP>::edgeNodes(int edge) const
 template<int NN, int NP>
 void upQuad<NN, NP>::checkSize(const matX& A, const char* what) const
 {
-    if (A.rows() != NN || A.cols() != 2)
-    {
-        throw numericalError
-        (
-            name_ + ": " + what + " is " + std::to_string(A.rows()) + "x"
-          + std::to_string(A.cols()) + ", expected " + std::to_string(NN)
-          + "x2 (nodes x dimensions)"
-        );
-    }
+    checkNodeMatrix(name_, A, what, NN, 2);
 }
 
 
