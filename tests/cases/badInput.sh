@@ -62,6 +62,30 @@ tryCase "missing mesh" "Solid region 'solid' has no mesh: constant/solid/polyMes
     "rm -rf constant/solid/polyMesh"
 tryCase "mesh that cannot be upgraded (3D)" "no 'empty' or 'wedge' patches" \
     "sed -i 's/type            empty;/type            patch;/' constant/solid/polyMesh/boundary"
+# 3D (solid3D): the base case made a 3D mesh (front and back patches of
+# type patch, held in z), then broken
+to3D="sed -i 's/frontAndBack { type empty;/frontAndBack { type patch;/' system/solid/blockMeshDict;
+    sed -i 's/^analysisType .*/analysisType solid3D;/; s/^elementType .*/elementType Hex27P4;/' $props;
+    sed -i 's/frontAndBack *{ type empty; }/frontAndBack { type fixedDisplacement; components (z); }/' 0/solid/D;
+    blockMesh -region solid > log.blockMesh 2>&1"
+tryCase "solid3D on a 2D mesh" "has 'empty' or 'wedge' patches \\(a 2D mesh\\), but .*solidProperties.* gives analysisType solid3D" \
+    "sed -i 's/^analysisType .*/analysisType solid3D;/; s/^elementType .*/elementType Hex27P4;/' $props"
+tryCase "3D: a 2D element type" "solidProperties.*: element type 'Q9P3' supports planeStrain and axisymmetric, not solid3D" \
+    "$to3D; sed -i 's/^elementType .*/elementType Q9P3;/' $props"
+tryCase "3D: component r" "Unknown component 'r' in .*0/solid/D.*left" \
+    "$to3D; sed -i 's/^    left .*/    left { type fixedDisplacement; components (r); }/' 0/solid/D"
+tryCase "3D: an inverted hexahedron" "Cell 0 of solid region 'solid' is inverted or degenerate: its Jacobian is -.* at corner" \
+    "$to3D; sed -i '0,/^(0 0 0)/s//(30 30 0)/' constant/solid/polyMesh/points"
+# polyhedra: the dual of the hexahedral mesh (polyDualMesh has no -region)
+tryCase "3D: cells that are not hexahedra" "Cell [0-9]* of solid region 'solid' is not a hexahedron but a polyhedron with [0-9]* faces" \
+    "$to3D; mkdir -p dual/system && cp system/controlDict dual/system/
+    echo 'FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
+        ddtSchemes {} gradSchemes {} divSchemes {} laplacianSchemes {}
+        interpolationSchemes {} snGradSchemes {}' > dual/system/fvSchemes
+    echo 'FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }' \
+        > dual/system/fvSolution
+    mv constant/solid dual/constant; (cd dual && polyDualMesh 30 -overwrite > log.polyDualMesh 2>&1)
+    mv dual/constant constant/solid"
 tryCase "summary point outside the mesh" "outside the mesh" \
     "foamDictionary -entry summary/tipDisplacementY/point -set '(100 100 0)' system/solidSolution >/dev/null"
 # an element turned inside out: the load is so large that det F <= 0 in

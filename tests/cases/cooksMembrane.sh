@@ -17,7 +17,8 @@ run()   # run <case>: blockMesh + formFoam, logs in the case
 #    applied shear F = 1
 c=$(caseCopy cooksMembrane)
 run "$c" || fail "linear Q9P3 run (see $c/log.formFoam)"
-checkClose "Q9P3 16x16 tip v(48,52)" "$(summaryValue "$c" tipDisplacementY)" $ref 5e-4
+q9tip=$(summaryValue "$c" tipDisplacementY)
+checkClose "Q9P3 16x16 tip v(48,52)" "$q9tip" $ref 5e-4
 checkClose "Q9P3 clamp reaction = -F" "$(summaryValue "$c" clampReactionY)" -1 1e-8
 
 # 2. Displacement-based Q4 locks: below 50% of the reference
@@ -59,5 +60,39 @@ run "$c" || fail "neo-Hookean single-step run"
 n=$(summaryValue "$c" cutbacks)
 checkBelow "large step was cut back automatically (summary cutbacks $n >= 1)" 0 "$n"
 checkClose "cut-back run tip = stepped run tip" \
+    "$(summaryValue "$c" tipDisplacementY)" "$tipSteps" 1e-6
+rm -rf "$c"
+
+# 6. The same membrane in 3D: the mesh extruded one cell thick (the front
+#    and back patches of type patch instead of empty, held in z: plane
+#    strain), analysisType solid3D. 27/4 hexahedra on the same in-plane
+#    mesh are the 9/3 quads times a constant in z, so they reproduce the
+#    2D results to round-off (tolerance 1e-6, linear and neo-Hookean);
+#    the 8-node hexahedron locks like the 4-node quad.
+extrude()   # extrude <case> <elementType>: the 2D case made 3D
+{
+    sed -i 's/frontAndBack { type empty;/frontAndBack { type patch;/' \
+        "$1/system/solid/blockMeshDict"
+    sed -i "s/^\( *analysisType \).*/\1 solid3D;/; s/^\( *elementType \).*/\1 $2;/" \
+        "$1/constant/solid/solidProperties"
+    sed -i 's/frontAndBack *{ type empty; }/frontAndBack { type fixedDisplacement; components (z); }/' \
+        "$1/0/solid/D"
+    rm -rf "$1"/constant/solid/polyMesh "$1"/[1-9]* "$1"/0.*
+}
+c=$(caseCopy cooksMembrane)
+extrude "$c" Hex27P4
+run "$c" || fail "3D Hex27P4 run (see $c/log.formFoam)"
+checkClose "Hex27P4 extruded tip = Q9P3 tip" \
+    "$(summaryValue "$c" tipDisplacementY)" "$q9tip" 1e-6
+checkClose "Hex27P4 clamp reaction = -F" "$(summaryValue "$c" clampReactionY)" -1 1e-8
+sed -i 's/^\( *elementType \).*/\1 Hex8;/' "$c/constant/solid/solidProperties"
+run "$c" || fail "3D Hex8 run (see $c/log.formFoam)"
+checkBelow "Hex8 extruded locks" "$(summaryValue "$c" tipDisplacementY)" \
+    "$(awk -v r=$ref 'BEGIN { print 0.5*r }')"
+rm -rf "$c"
+c=$(caseCopy cooksMembrane/neoHookean)
+extrude "$c" Hex27P4
+run "$c" || fail "3D neo-Hookean run (see $c/log.formFoam)"
+checkClose "Hex27P4 extruded neo-Hookean tip = Q9P3 tip" \
     "$(summaryValue "$c" tipDisplacementY)" "$tipSteps" 1e-6
 rm -rf "$c"

@@ -2,64 +2,112 @@
   formFoam: implicit finite-element forming with fluid-structure interaction
 -------------------------------------------------------------------------------
 Description
-    Implementation of pointLocator.H: finds the element of a 2D quad mesh
-    (4- or 9-node, VTK ordering) that contains a reference point, its natural
-    coordinates (r, s) by Newton inversion of the bilinear corner map, and
-    interpolates nodal fields there with the element's Lagrange shape
-    functions.
+    Implementation of pointLocator.H: finds the element of a quad or hex
+    mesh that contains a reference point by Newton inversion of the
+    isoparametric map, and interpolates nodal fields there.
 \*---------------------------------------------------------------------------*/
 #include "pointLocator.H"
+#include "formError.H"
+#include "hexShape.H"
+#include "quadShape.H"
 #include <cmath>
+
+namespace
+{
+
+template<class Shape, int NN, int D>
+void evalInto(const form::vecX& xi, form::vecX& N, form::matX& dN)
+{
+    typename Shape::vecN n;
+    Eigen::Matrix<double, NN, D> d;
+    if constexpr (D == 2) Shape::eval(xi(0), xi(1), n, d);
+    else Shape::eval(xi(0), xi(1), xi(2), n, d);
+    N = n;
+    dN = d;
+}
+
+} // anonymous namespace
+
+
+void form::elementShape
+(
+    int nDim,
+    int nNodes,
+    const vecX& xi,
+    vecX& N,
+    matX& dN
+)
+{
+    if (nDim == 2 && nNodes == 4) evalInto<quadShape<4>, 4, 2>(xi, N, dN);
+    else if (nDim == 2 && nNodes == 9) evalInto<quadShape<9>, 9, 2>(xi, N, dN);
+    else if (nDim == 3 && nNodes == 8) evalInto<hexShape<8>, 8, 3>(xi, N, dN);
+    else if (nDim == 3 && nNodes == 27) evalInto<hexShape<27>, 27, 3>(xi, N, dN);
+    else
+    {
+        throw numericalError
+        (
+            "elementShape: no " + std::to_string(nNodes) + "-node element in "
+          + std::to_string(nDim) + "D"
+        );
+    }
+}
+
 
 form::pointLocation form::locatePoint
 (
     const feMesh& mesh,
-    const Eigen::Vector2d& x,
+    const vecX& x,
     double tol
 )
 {
+    const int D = mesh.nDim;
     pointLocation best;
     double bestErr = 1e30;
+    vecX N, xi;
+    matX dN, C;
     for (int b = 0; b < int(mesh.blocks.size()); ++b)
     {
         const auto& blk = mesh.blocks[b];
+        const int nn = blk.nodesPerElement;
+        C.resize(nn, D);
         for (int e = 0; e < blk.nElements(); ++e)
         {
-            Eigen::Matrix<double, 4, 2> C;
-            for (int k = 0; k < 4; ++k)
-            {
-                C.row(k) = mesh.X.row(blk.nodes(e)[k]).head<2>();
-            }
-            // bounding-box rejection
-            const Eigen::Vector2d lo = C.colwise().minCoeff();
-            const Eigen::Vector2d hi = C.colwise().maxCoeff();
+            for (int a = 0; a < nn; ++a) C.row(a) = mesh.X.row(blk.nodes(e)[a]);
+            // bounding-box rejection (the nodes of a curved element bound
+            // it closely enough at this tolerance)
+            const vecX lo = C.colwise().minCoeff();
+            const vecX hi = C.colwise().maxCoeff();
             const double h = (hi - lo).norm();
-            if ((x.array() < lo.array() - 1e-6*h).any()
-             || (x.array() > hi.array() + 1e-6*h).any())
+            if
+            (
+                (x.array() < lo.array() - 1e-2*h).any()
+             || (x.array() > hi.array() + 1e-2*h).any()
+            )
             {
                 continue;
             }
-            // Newton inversion of the bilinear map
-            double r = 0, s = 0;
-            for (int it = 0; it < 30; ++it)
+            // Newton inversion of x(xi) = C^T N(xi), damped to stay in a
+            // box around the element
+            xi = vecX::Zero(D);
+            for (int it = 0; it < 50; ++it)
             {
-                const vecX N = quadShapeValues(4, r, s);
-                Eigen::Vector2d xr = C.transpose()*N;
-                Eigen::Matrix<double, 4, 2> dN;
-                dN << -(1 - s), -(1 - r),  (1 - s), -(1 + r),
-                       (1 + s),  (1 + r), -(1 + s),  (1 - r);
-                dN *= 0.25;
-                const Eigen::Matrix2d J = C.transpose()*dN;
-                const Eigen::Vector2d d = J.inverse()*(x - xr);
-                r += d(0);
-                s += d(1);
+                elementShape(D, nn, xi, N, dN);
+                const matX J = C.transpose()*dN;
+                const vecX d = J.lu().solve(x - C.transpose()*N);
+                if (!d.allFinite()) break;
+                xi += d;
+                xi = xi.cwiseMax(-2.0).cwiseMin(2.0);
                 if (d.norm() < 1e-14) break;
             }
-            const double err = std::max(std::abs(r), std::abs(s)) - 1.0;
+            const double err = xi.cwiseAbs().maxCoeff() - 1.0;
             if (err < bestErr)
             {
                 bestErr = err;
-                best = {b, e, r, s};
+                best.block = b;
+                best.element = e;
+                best.r = xi(0);
+                best.s = xi(1);
+                best.t = D == 3 ? xi(2) : 0.0;
             }
         }
     }
@@ -79,7 +127,13 @@ form::vecX form::interpolate
 )
 {
     const auto& blk = mesh.blocks[loc.block];
-    const vecX N = quadShapeValues(blk.nodesPerElement, loc.r, loc.s);
+    vecX xi(mesh.nDim);
+    xi(0) = loc.r;
+    xi(1) = loc.s;
+    if (mesh.nDim == 3) xi(2) = loc.t;
+    vecX N;
+    matX dN;
+    elementShape(mesh.nDim, blk.nodesPerElement, xi, N, dN);
     vecX v = vecX::Zero(f.cols());
     for (int a = 0; a < blk.nodesPerElement; ++a)
     {

@@ -32,12 +32,26 @@ Eigen::Vector2d Foam::polyMeshToFeMesh::toPlane(const point& p) const
 }
 
 
+form::vecX Foam::polyMeshToFeMesh::toFe(const point& p) const
+{
+    if (projection_ == projection::space)
+    {
+        return Eigen::Vector3d(p.x(), p.y(), p.z());
+    }
+    return toPlane(p);
+}
+
+
 Foam::vector Foam::polyMeshToFeMesh::toSpace
 (
     const point& p,
-    const Eigen::Vector2d& v
+    const form::vecX& v
 ) const
 {
+    if (projection_ == projection::space)
+    {
+        return vector(v(0), v(1), v(2));
+    }
     if (projection_ == projection::planar)
     {
         return vector(v(0), v(1), 0);
@@ -52,6 +66,8 @@ Foam::vector Foam::polyMeshToFeMesh::toSpace
 Foam::polyMeshToFeMesh::polyMeshToFeMesh
 (
     const polyMesh& mesh,
+    label nDim,
+    const fileName& properties,
     label nodesPerElement,
     const word& elementType,
     const word& materialName
@@ -97,17 +113,49 @@ Foam::polyMeshToFeMesh::polyMeshToFeMesh
         }
         if (axis_[d] < 0) axis_ = -axis_;
     }
+    if (nDim == 3)
+    {
+        if (anyEmpty || anyWedge)
+        {
+            FatalErrorInFunction
+                << "The mesh of solid region '" << region << "' has 'empty'"
+                << " or 'wedge' patches (a 2D mesh), but " << properties
+                << " gives analysisType solid3D." << nl
+                << "    Use planeStrain or axisymmetric, or a 3D mesh whose"
+                << " patches are all of type patch or wall."
+                << exit(FatalError);
+        }
+        projection_ = projection::space;
+        build3D(nodesPerElement, elementType, materialName);
+        return;
+    }
     if (!anyEmpty && !anyWedge)
     {
         FatalErrorInFunction
             << "The mesh of solid region '" << region << "' has no 'empty' or"
-            << " 'wedge' patches." << nl
+            << " 'wedge' patches (a 3D mesh), but " << properties
+            << " gives a 2D analysisType." << nl
             << "    2D solid meshes must be one cell thick with empty (plane"
             << " strain) or wedge (axisymmetric) front and back patches;"
-            << nl << "    3D solid elements are not available yet."
+            << " a 3D mesh needs analysisType solid3D."
             << exit(FatalError);
     }
     if (anyWedge) projection_ = projection::wedge;
+    build2D(isFrontBack, nodesPerElement, elementType, materialName);
+}
+
+
+void Foam::polyMeshToFeMesh::build2D
+(
+    const boolList& isFrontBack,
+    label nodesPerElement,
+    const word& elementType,
+    const word& materialName
+)
+{
+    const polyMesh& mesh = mesh_;
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const word region = mesh.name();
 
     // The front face of every cell: the one of its two front/back faces
     // that lies on the positive side (largest z for planar meshes; for

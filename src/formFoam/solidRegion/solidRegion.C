@@ -141,361 +141,6 @@ const std::vector<int>& Foam::solidRegion::patchNodes
 }
 
 
-void Foam::solidRegion::release
-(
-    const word& patch,
-    const labelList& components,
-    const dictionary& dict,
-    const scalar t0,
-    const scalar t1
-)
-{
-    const std::vector<int>& nodes = patchNodes(patch, dict);
-    if (!(t1 > t0))
-    {
-        // Restored release (a step begun before a restart): its loads
-        // come with the restart state
-        for (const label c : components) model_->releaseConstraint(nodes, c);
-        return;
-    }
-    // Something to release: the patch's own constraint in each component
-    // named (most of its nodes held; a free patch's end nodes may be held
-    // by a neighbouring patch, whose constraint is not the one meant)
-    for (const label c : components)
-    {
-        label held = 0;
-        for (const int n : nodes)
-        {
-            held += model_->constrained(model_->dofs().dof(n, c));
-        }
-        if (2*held < label(nodes.size()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'release' in " << dict.name() << ": patch '"
-                << patch << "' has no constraint in component "
-                << (analysis_ == form::analysisType::axisymmetric
-                    ? (c == 0 ? "r" : "z") : (c == 0 ? "x" : "y"))
-                << " to release: " << held << " of its " << label(nodes.size())
-                << " nodes are held (by a neighbouring patch), the others"
-                << " are free or already released" << exit(FatalIOError);
-        }
-    }
-    // Current reactions
-    form::vecX r;
-    model_->evaluate(t0, r, false);
-    for (const label c : components)
-    {
-        model_->releaseConstraint(nodes, c, t0, t1);
-    }
-}
-
-
-void Foam::solidRegion::hold
-(
-    const word& patch,
-    const labelList& components,
-    const dictionary& dict
-)
-{
-    const std::vector<int>& nodes = patchNodes(patch, dict);
-    const form::vecX U = model_->U();
-    const form::dofMap dofs = model_->dofs();
-    for (const label c : components)
-    {
-        model_->addNodalConstraint
-        (
-            nodes, c,
-            [U, dofs, c](int node, double) { return U(dofs.dof(node, c)); }
-        );
-    }
-}
-
-
-void Foam::solidRegion::pin
-(
-    const point& p,
-    const labelList& components,
-    const dictionary& dict
-)
-{
-    const form::feMesh& fe = feMesh_->feMesh();
-    const Eigen::Vector2d x = feMesh_->toPlane(p);
-    int best = -1;
-    double dmin = GREAT;
-    for (int n = 0; n < fe.nNodes(); ++n)
-    {
-        const double d = (fe.X.row(n).transpose() - x).norm();
-        if (d < dmin) { dmin = d; best = n; }
-    }
-    const double size =
-        (fe.X.colwise().maxCoeff() - fe.X.colwise().minCoeff()).norm();
-    if (best < 0 || dmin > 1e-6*size)
-    {
-        FatalIOErrorInFunction(dict)
-            << "No node of solid region '" << name_ << "' at point " << p
-            << " (nearest at distance " << dmin << ") in " << dict.name()
-            << exit(FatalIOError);
-    }
-    const form::vecX U = model_->U();
-    const form::dofMap dofs = model_->dofs();
-    for (const label c : components)
-    {
-        model_->addNodalConstraint
-        (
-            {best}, c,
-            [U, dofs, c](int node, double) { return U(dofs.dof(node, c)); }
-        );
-    }
-}
-
-
-void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
-{
-    const word type = pd.get<word>("type");
-    const form::feMesh& fe = feMesh_->feMesh();
-    if (type == "free")
-    {
-        checkKeywords(pd, {"type", "value"});
-        return;
-    }
-    const std::vector<int>& nodes = patchNodes(patch, pd);
-    if (type == "fixedDisplacement")
-    {
-        checkKeywords(pd, {"type", "components", "displacement", "value"});
-        labelList comps;
-        if (pd.found("components"))
-        {
-            for (const word& c : pd.get<wordList>("components"))
-            {
-                comps.append(solidComponent(c, pd, analysis_));
-            }
-        }
-        else
-        {
-            comps = labelList({0, 1});
-        }
-        std::shared_ptr<Function1<vector>> disp;
-        if (pd.found("displacement"))
-        {
-            disp.reset(Function1<vector>::New("displacement", pd).ptr());
-        }
-        for (const label c : comps)
-        {
-            form::timeFunction f = nullptr;
-            if (disp)
-            {
-                f = [disp, c](double t) { return disp->value(t)[c]; };
-            }
-            model_->addConstraint(nodes, c, f);
-        }
-    }
-    else if (type == "traction")
-    {
-        checkKeywords(pd, {"type", "traction", "value"});
-        std::shared_ptr<Function1<vector>> tr
-        (
-            Function1<vector>::New("traction", pd).ptr()
-        );
-        // Components in the FE plane (x y, or r z of a wedge); the third
-        // is out of the plane and must be zero
-        const fileName file = pd.name();
-        model_->addTraction
-        (
-            patch,
-            [tr, file](double t)
-            {
-                const vector v = tr->value(t);
-                if (v.z() != 0)
-                {
-                    FatalErrorInFunction
-                        << "Entry 'traction' in " << file << ": " << v
-                        << " at t = " << t << " has an out-of-plane (z)"
-                        << " component in a 2D analysis" << exit(FatalError);
-                }
-                return form::vec3(v.x(), v.y(), 0);
-            }
-        );
-    }
-    else if (type == "pressure")
-    {
-        checkKeywords(pd, {"type", "pressure", "value"});
-        std::shared_ptr<Function1<scalar>> pr
-        (
-            Function1<scalar>::New("pressure", pd).ptr()
-        );
-        model_->addPressure
-        (
-            patch,
-            [pr](double t) { return pr->value(t); }
-        );
-        hasFollowerLoads_ = true;
-    }
-    else if (type == "rigidMotion")
-    {
-        // x = o + c(t) + R(theta(t)) (X - o) on the patch: a rigid rotation
-        // by theta (counter-clockwise in the FE plane) about the origin o,
-        // then a translation c; both components are prescribed
-        checkKeywords(pd, {"type", "origin", "angle", "translation", "value"});
-        const Eigen::Vector2d o = feMesh_->toPlane(pd.get<point>("origin"));
-        std::shared_ptr<Function1<scalar>> angle
-        (
-            Function1<scalar>::New("angle", pd).ptr()
-        );
-        std::shared_ptr<Function1<vector>> translation;
-        if (pd.found("translation"))
-        {
-            translation.reset(Function1<vector>::New("translation", pd).ptr());
-        }
-        const form::matX X = fe.X;
-        for (const label c : {0, 1})
-        {
-            model_->addNodalConstraint
-            (
-                nodes,
-                c,
-                [=](int node, double t)
-                {
-                    const double th = angle->value(t);
-                    const Eigen::Vector2d d = X.row(node).transpose() - o;
-                    Eigen::Matrix2d R;
-                    R << std::cos(th), -std::sin(th),
-                         std::sin(th), std::cos(th);
-                    Eigen::Vector2d u = R*d - d;
-                    if (translation)
-                    {
-                        const vector v = translation->value(t);
-                        u += Eigen::Vector2d(v.x(), v.y());
-                    }
-                    return u(c);
-                }
-            );
-        }
-    }
-    else
-    {
-        FatalIOErrorInFunction(pd)
-            << "Unknown boundary condition type '" << type
-            << "' for patch '" << patch << "' in " << pd.name() << nl
-            << "    Valid types: " << conditionTypes()
-            << exit(FatalIOError);
-    }
-}
-
-
-void Foam::solidRegion::readBoundaryConditions()
-{
-    // The conditions are input: they live in the case's initial time
-    // directory (the earliest with <region>/D), also when restarting from a
-    // later time, whose D holds results
-    fileName path = runTime_.path()/runTime_.timeName()/name_/"D";
-    for (const instant& t : runTime_.times())
-    {
-        const fileName p = runTime_.path()/t.name()/name_/"D";
-        if (t.name() != runTime_.constant() && isFile(p))
-        {
-            path = p;
-            break;
-        }
-    }
-    if (!isFile(path))
-    {
-        FatalErrorInFunction
-            << "Missing boundary conditions of solid region '" << name_
-            << "': file " << path << " not found"
-            << exit(FatalError);
-    }
-    IFstream is(path);
-    const dictionary fieldDict(is);
-    checkInput(fieldDict, path);
-    // The run starts from the undeformed state: an initial displacement in
-    // internalField would be ignored, so anything but zero is an error
-    if (fieldDict.found("internalField"))
-    {
-        const ITstream& is = fieldDict.lookup("internalField");
-        const std::string text = is.toString();
-        bool zero = false;
-        try
-        {
-            ITstream copy(is);
-            copy.rewind();
-            word kind;
-            copy >> kind;
-            vector v;
-            copy >> v;
-            zero = kind == "uniform" && mag(v) == 0 && copy.eof();
-        }
-        catch (const Foam::error&) {}
-        if (!zero)
-        {
-            FatalIOErrorInFunction(fieldDict)
-                << "Entry 'internalField' in " << path << ": '" << text.c_str()
-                << "'; formFoam starts from the undeformed state, so it must"
-                << " be uniform (0 0 0) (displacements are prescribed on"
-                << " patches in boundaryField)" << exit(FatalIOError);
-        }
-    }
-    const dictionary& bf =
-        subDictOf(fieldDict, "boundaryField", "{ <patch> { type ...; } }");
-
-    wordList validTypes(conditionTypes());
-    validTypes.append("empty");
-    validTypes.append("wedge");
-
-    for (const polyPatch& pp : mesh_->boundaryMesh())
-    {
-        const bool frontBack =
-            isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp);
-        if (!bf.found(pp.name()))
-        {
-            if (frontBack) continue;
-            FatalIOErrorInFunction(bf)
-                << "No boundary condition for patch '" << pp.name()
-                << "' of solid region '" << name_ << "' in " << bf.name()
-                << nl << "    Valid types: " << validTypes
-                << exit(FatalIOError);
-        }
-        const dictionary& pd =
-            subDictOf(bf, pp.name(), "{ type fixedDisplacement; ... }");
-        const word type = pd.get<word>("type");
-        if (!validTypes.found(type))
-        {
-            FatalIOErrorInFunction(pd)
-                << "Unknown boundary condition type '" << type
-                << "' for patch '" << pp.name() << "' in " << pd.name() << nl
-                << "    Valid types: " << validTypes
-                << exit(FatalIOError);
-        }
-        if (frontBack != (type == "empty" || type == "wedge"))
-        {
-            FatalIOErrorInFunction(pd)
-                << "Patch '" << pp.name() << "' is of mesh type "
-                << pp.type() << " but its condition is '" << type << "'"
-                << exit(FatalIOError);
-        }
-        if (frontBack)
-        {
-            checkKeywords(pd, {"type", "value"});
-            continue;
-        }
-
-        applyCondition(pp.name(), pd);
-    }
-    // entries for patches that do not exist
-    for (const entry& e : bf)
-    {
-        if (mesh_->boundaryMesh().findPatchID(e.keyword()) < 0)
-        {
-            FatalIOErrorInFunction(bf)
-                << "Boundary condition for patch '" << e.keyword()
-                << "', which the mesh of solid region '" << name_
-                << "' does not have" << nl << "    Patches: "
-                << mesh_->boundaryMesh().names()
-                << exit(FatalIOError);
-        }
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::solidRegion::solidRegion(Time& runTime, const word& name)
@@ -524,15 +169,6 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
     try
     {
         analysis_ = form::analysisTypeFromName(analysisName);
-        if (analysis_ == form::analysisType::solid3D)
-        {
-            throw form::inputError
-            (
-                "analysisType",
-                "3D solid elements are not available yet; valid: "
-                "planeStrain axisymmetric"
-            );
-        }
     }
     catch (const form::inputError& err)
     {
@@ -585,7 +221,15 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
 
     feMesh_.reset
     (
-        new polyMeshToFeMesh(*mesh_, nodesPerElement, elementType_, "material")
+        new polyMeshToFeMesh
+        (
+            *mesh_,
+            analysis_ == form::analysisType::solid3D ? 3 : 2,
+            properties_.objectPath(),
+            nodesPerElement,
+            elementType_,
+            "material"
+        )
     );
 
     if
@@ -649,8 +293,12 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
             {
                 // In the FE plane: (x, y) of a plane mesh; (r, z) of a
                 // wedge: the axial component only (a radial body force is
-                // not axisymmetric)
+                // not axisymmetric); 3D: (x, y, z)
                 const vector v = g->value(t);
+                if (fe->proj() == polyMeshToFeMesh::projection::space)
+                {
+                    return form::vec3(v.x(), v.y(), v.z());
+                }
                 if (fe->proj() == polyMeshToFeMesh::projection::planar)
                 {
                     return form::vec3(v.x(), v.y(), 0);
@@ -694,7 +342,7 @@ Foam::scalar Foam::solidRegion::displacementAt
 {
     const form::feMesh& fe = feMesh_->feMesh();
     const form::pointLocation loc =
-        form::locatePoint(fe, feMesh_->toPlane(pt), 1e-6);
+        form::locatePoint(fe, feMesh_->toFe(pt), 1e-6);
     if (!loc.found())
     {
         FatalIOErrorInFunction(dict)
@@ -736,7 +384,7 @@ Eigen::MatrixXd Foam::solidRegion::patchPoints
     const std::vector<int>& nodes = patchNodes(patch, dict);
     const form::feMesh& fe = feMesh_->feMesh();
     const form::matX U = model_->displacement();
-    Eigen::MatrixXd P(nodes.size(), 2);
+    Eigen::MatrixXd P(nodes.size(), fe.nDim);
     for (std::size_t k = 0; k < nodes.size(); ++k)
     {
         P.row(k) = fe.X.row(nodes[k]);

@@ -68,24 +68,23 @@ bool Foam::solidRegion::write()
     volScalarField epsilonEq(io("epsilonEq"), *mesh_, dimensionedScalar(dimless, Zero));
 
     const form::elementBlock& blk = fe.blocks[0];
-    const form::vecX Nc = form::quadShapeValues(blk.nodesPerElement, 0, 0);
+    const int nDim = fe.nDim;
+    form::vecX Nc;
+    form::matX dNc;
+    form::elementShape(nDim, blk.nodesPerElement, form::vecX::Zero(nDim), Nc, dNc);
     const vectorField& C = mesh_->C();
     forAll(C, celli)
     {
-        Eigen::Vector2d u = Eigen::Vector2d::Zero();
+        form::vecX u = form::vecX::Zero(nDim);
         for (int a = 0; a < blk.nodesPerElement; ++a)
         {
             u += Nc(a)*U.row(blk.nodes(celli)[a]).transpose();
         }
         D[celli] = feMesh_->toSpace(C[celli], u);
 
-        // Cauchy stress from the FE plane (first, second, out-of-plane) to
-        // the polyMesh space
+        // Cauchy stress from the FE frame (2D: first, second, out-of-plane
+        // direction) to the polyMesh space
         const form::elementResult& r = results[celli];
-        const vector e1 = feMesh_->toSpace(C[celli], Eigen::Vector2d(1, 0));
-        const vector e2 = feMesh_->toSpace(C[celli], Eigen::Vector2d(0, 1));
-        const vector e3 = e1 ^ e2;
-        const tensor Q(e1, e2, e3);     // rows: basis vectors
         tensor s(Zero);
         for (direction i = 0; i < 3; ++i)
         {
@@ -94,7 +93,17 @@ bool Foam::solidRegion::write()
                 s(i, j) = r.cauchy(i, j);
             }
         }
-        sigma[celli] = symm(Q.T() & s & Q);
+        if (nDim == 2)
+        {
+            const vector e1 =
+                feMesh_->toSpace(C[celli], Eigen::Vector2d(1, 0));
+            const vector e2 =
+                feMesh_->toSpace(C[celli], Eigen::Vector2d(0, 1));
+            const vector e3 = e1 ^ e2;
+            const tensor Q(e1, e2, e3);     // rows: basis vectors
+            s = Q.T() & s & Q;
+        }
+        sigma[celli] = symm(s);
         sigmaEq[celli] = sqrt(1.5*magSqr(dev(sigma[celli])));
         p[celli] = r.pressure;
         epsilonEq[celli] = r.equivalentStrain;
@@ -121,7 +130,7 @@ bool Foam::solidRegion::write()
     IOField<vector> feU(io("feU"), vectorField(fe.nNodes(), Zero));
     for (int n = 0; n < fe.nNodes(); ++n)
     {
-        feU[n] = vector(U(n, 0), U(n, 1), 0);
+        feU[n] = vector(U(n, 0), U(n, 1), nDim == 3 ? U(n, 2) : 0);
     }
 
     // Material history (plastic strains, back stresses...) for restarts
@@ -217,8 +226,10 @@ bool Foam::solidRegion::readState(const word& timeName)
     form::vecX dU = -model_->U();
     for (int n = 0; n < fe.nNodes(); ++n)
     {
-        dU(model_->dofs().dof(n, 0)) += feU[n].x();
-        dU(model_->dofs().dof(n, 1)) += feU[n].y();
+        for (int c = 0; c < fe.nDim; ++c)
+        {
+            dU(model_->dofs().dof(n, c)) += feU[n][c];
+        }
     }
     model_->setDisplacement(model_->U() + dU);
 

@@ -77,7 +77,7 @@ std::map<std::string, std::string> interfaceCase()
 struct interfaceFixture
 {
     scratchCase c{interfaceCase(), {"fluid", "solid"}};
-    Foam::polyMeshToFeMesh solid{c.mesh("solid"), 9, "Q9P3", "steel"};
+    Foam::polyMeshToFeMesh solid{c.mesh("solid"), 2, "solidProperties", 9, "Q9P3", "steel"};
     Foam::fvMesh& fluid = c.mesh("fluid");
     Foam::pointField points0{fluid.points()};
     Foam::fluidSolidInterface itf
