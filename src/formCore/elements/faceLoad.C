@@ -8,6 +8,19 @@ Description
         f_a = int N_a t dA0,   dA0 = |X_xi x X_eta| dxi deta
     integrated with 3 x 3 Gauss points (exact on flat parallelogram faces,
     where |X_xi x X_eta| is constant and N_a of degree <= 2 per direction).
+
+    Follower pressure p on the current face x = X + u (outward normal
+    n da = x_xi x x_eta dxi deta, the face's corners counter-clockwise seen
+    from outside):
+        f_a = -p int N_a (x_xi x x_eta) dxi deta
+    and its load stiffness K = -df/du: with d(x_xi x x_eta)/dx_b . v =
+    N_b,xi (v x x_eta) + N_b,eta (x_xi x v) = (N_b,eta [x_xi]_x -
+    N_b,xi [x_eta]_x) v, where [a]_x v = a x v,
+        K_ab = p int N_a (N_b,eta [x_xi]_x - N_b,xi [x_eta]_x) dxi deta
+    (Bonet & Wood, Nonlinear Continuum Mechanics for FEA, 2nd ed.,
+    sec. 8.4.2; unsymmetric per face, symmetric when assembled over a
+    closed surface: W = -p V is a potential). 3 x 3 Gauss points integrate
+    the 9-node face's polynomial integrand exactly.
 \*---------------------------------------------------------------------------*/
 #include "solidElement.H"
 #include "gaussLegendre.H"
@@ -56,6 +69,78 @@ vecX faceLoad::deadTraction(const matX& X, const vec3& t)
         for (int a = 0; a < n; ++a) f.segment<3>(3*a) += N(a)*dA*t;
     }
     return f;
+}
+
+
+void faceLoad::followerPressure
+(
+    const matX& X,
+    const matX& u,
+    double p,
+    vecX& f,
+    matX* K
+)
+{
+    const int n = int(X.rows());
+    if
+    (
+        (n != 4 && n != 9) || X.cols() != 3
+     || u.rows() != n || u.cols() != 3
+    )
+    {
+        throw numericalError
+        (
+            "faceLoad::followerPressure: face with " + std::to_string(X.rows())
+          + "x" + std::to_string(X.cols()) + " coordinates and "
+          + std::to_string(u.rows()) + "x" + std::to_string(u.cols())
+          + " displacements; expected 4 or 9 nodes x 3"
+        );
+    }
+    const matX x = X + u;
+    const auto skew = [](const vec3& a)
+    {
+        mat3 W;
+        W << 0, -a(2), a(1), a(2), 0, -a(0), -a(1), a(0), 0;
+        return W;
+    };
+    f = vecX::Zero(3*n);
+    if (K) *K = matX::Zero(3*n, 3*n);
+    vecX N;
+    matX dN;
+    for (const quadraturePoint2D& q : gaussLegendreQuad(3))
+    {
+        if (n == 4)
+        {
+            quadShape<4>::vecN N4;
+            quadShape<4>::matN2 dN4;
+            quadShape<4>::eval(q.r, q.s, N4, dN4);
+            N = N4;
+            dN = dN4;
+        }
+        else
+        {
+            quadShape<9>::vecN N9;
+            quadShape<9>::matN2 dN9;
+            quadShape<9>::eval(q.r, q.s, N9, dN9);
+            N = N9;
+            dN = dN9;
+        }
+        const vec3 xr = x.transpose()*dN.col(0);
+        const vec3 xs = x.transpose()*dN.col(1);
+        const vec3 nda = xr.cross(xs)*q.w;
+        for (int a = 0; a < n; ++a) f.segment<3>(3*a) += -p*N(a)*nda;
+        if (!K) continue;
+        const mat3 Wr = skew(xr)*(p*q.w);
+        const mat3 Ws = skew(xs)*(p*q.w);
+        for (int b = 0; b < n; ++b)
+        {
+            const mat3 Gb = dN(b, 1)*Wr - dN(b, 0)*Ws;
+            for (int a = 0; a < n; ++a)
+            {
+                K->block<3, 3>(3*a, 3*b) += N(a)*Gb;
+            }
+        }
+    }
 }
 
 } // namespace form

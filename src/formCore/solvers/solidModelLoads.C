@@ -57,10 +57,20 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
         for (const faceRef& face : l.faces)
         {
             gatherFace(face, X, u);
-            edgeLoad::followerPressure
-            (
-                X, u, p, analysis, f, wantTangent ? &K : nullptr
-            );
+            if (nDim == 3)
+            {
+                faceLoad::followerPressure
+                (
+                    X, u, p, f, wantTangent ? &K : nullptr
+                );
+            }
+            else
+            {
+                edgeLoad::followerPressure
+                (
+                    X, u, p, analysis, f, wantTangent ? &K : nullptr
+                );
+            }
             const int nf = int(face.nodes.size());
             for (int a = 0; a < nf; ++a)
             {

@@ -99,3 +99,66 @@ TEST(solid3D, uniaxialTractionOnAHex27P4Cube)
     // The reaction on x = 0 balances the applied force sigma * 1
     EXPECT_NEAR(model.reaction(mesh.nodeSets["x0"])(0), -sigma, 1e-10);
 }
+
+
+// A neo-Hookean Hex27P4 cube on its three symmetry planes, a follower
+// pressure p on the other three faces (x = 1, y = 1, z = 1): the exact
+// state is a uniform compression u = (lambda - 1) X with the Cauchy stress
+// -p I, whatever lambda the material gives. A dead load of p per
+// reference area would give -p/lambda^2 I instead (here 8 % less), so the
+// stress tells the follower load from a dead one; Newton converges to
+// machine precision with the consistent load stiffness of faceLoad.
+TEST(solid3D, followerPressureCompressesANeoHookeanCube)
+{
+    feMesh mesh;
+    mesh.nDim = 3;
+    mesh.X.resize(27, 3);
+    for (int a = 0; a < 27; ++a)
+    {
+        mesh.X.row(a) = 0.5*(hexShape<27>::node(a) + vec3::Ones()).transpose();
+    }
+    elementBlock b;
+    b.name = "cube";
+    b.elementType = "Hex27P4";
+    b.materialName = "rubber";
+    b.nodesPerElement = 27;
+    for (int a = 0; a < 27; ++a) b.connectivity.push_back(a);
+    mesh.blocks.push_back(b);
+    const auto nodesOf = [](int face) { return hexFaceNodes(27, face); };
+    for (const int face : {1, 3, 5})
+    {
+        mesh.faceSets["loaded"].push_back({0, 0, face, nodesOf(face)});
+    }
+    mesh.nodeSets["x0"] = nodesOf(0);
+    mesh.nodeSets["y0"] = nodesOf(2);
+    mesh.nodeSets["z0"] = nodesOf(4);
+
+    const double E = 10, nu = 0.3, p = 1.5;
+    std::map<std::string, std::shared_ptr<material>> mats;
+    mats["rubber"] = material::New("neoHookean", {{"E", E}, {"nu", nu}});
+    solidModel model(mesh, analysisType::solid3D, mats);
+    model.addConstraint(mesh.nodeSets["x0"], 0);
+    model.addConstraint(mesh.nodeSets["y0"], 1);
+    model.addConstraint(mesh.nodeSets["z0"], 2);
+    model.addPressure("loaded", [p](double t) { return p*t; });
+    model.finalise();
+
+    auto solver = linearSolver::New("umfpack");
+    stepControls steps;
+    steps.deltaT = 0.5;
+    std::ostringstream log;
+    staticSolver(model, *solver, newtonControls(), steps, log).run(nullptr);
+
+    const matX u = model.displacement();
+    const double stretch = 1 + u(6, 0);     // node 6: (1, 1, 1)
+    EXPECT_LT(stretch, 0.97) << log.str();  // compressed by a few %
+    double err = 0;
+    for (int a = 0; a < 27; ++a)
+    {
+        const vec3 X = mesh.X.row(a).transpose();
+        err = std::max(err, (u.row(a).transpose() - (stretch - 1)*X).norm());
+    }
+    EXPECT_LT(err, 1e-12) << log.str();
+    const mat3 sigma = model.elementResults()[0].cauchy;
+    EXPECT_LT((sigma + p*mat3::Identity()).norm(), 1e-10*p) << sigma;
+}
