@@ -76,6 +76,8 @@ tryCase "3D: component r" "Unknown component 'r' in .*0/solid/D.*left" \
     "$to3D; sed -i 's/^    left .*/    left { type fixedDisplacement; components (r); }/' 0/solid/D"
 tryCase "3D: an inverted hexahedron" "Cell 0 of solid region 'solid' is inverted or degenerate: its Jacobian is -.* at corner" \
     "$to3D; sed -i '0,/^(0 0 0)/s//(30 30 0)/' constant/solid/polyMesh/points"
+tryCase "3D: a 2D profile measure in the summary" "Summary type 'circleRadius' in .*solidSolution.* measures a profile in the plane of a 2D analysis" \
+    "$to3D; foamDictionary -entry summary/radius -add '{ type circleRadius; patches (top); }' system/solidSolution > /dev/null"
 # polyhedra: the dual of the hexahedral mesh (polyDualMesh has no -region)
 tryCase "3D: cells that are not hexahedra" "Cell [0-9]* of solid region 'solid' is not a hexahedron but a polyhedron with [0-9]* faces" \
     "$to3D; mkdir -p dual/system && cp system/controlDict dual/system/

@@ -169,6 +169,23 @@ void Foam::formScene::readSummary()
                 << exit(FatalIOError);
         }
         checkKeywords(ed, keys);
+        // Measures of a curve in the FE plane
+        if
+        (
+            wordList{"circleRadius", "rotation", "bendingRadius",
+                "uChannelSpringback"}.found(type)
+         && !solids_.empty()
+         && solids_[0].analysis() == form::analysisType::solid3D
+        )
+        {
+            FatalIOErrorInFunction(ed)
+                << "Summary type '" << type << "' in " << ed.name()
+                << " measures a profile in the plane of a 2D analysis;"
+                << " solid region '" << solids_[0].name() << "' is 3D" << nl
+                << "    Valid in 3D: displacement position reaction extent"
+                << " difference" << (contact_ ? " toolForce toolPosition" : "")
+                << exit(FatalIOError);
+        }
         se.statistic = ed.getOrDefault<word>("statistic", "final");
         if (!wordList{"final", "max", "min"}.found(se.statistic))
         {
@@ -348,8 +365,7 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         else if (type == "position")
         {
             const point p = ed.get<point>("point");
-            const Eigen::Vector2d X = s.feMesh().toPlane(p);
-            value = X(comp) + s.displacementAt(p, comp, ed);
+            value = s.feMesh().toFe(p)(comp) + s.displacementAt(p, comp, ed);
         }
         else
         {
