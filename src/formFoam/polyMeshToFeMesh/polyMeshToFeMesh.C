@@ -11,6 +11,7 @@ Description
 #include "HashTable.H"
 #include "edge.H"
 #include "quadShape.H"
+#include "blockMeshLattice.H"
 
 Foam::Vector2D<Foam::scalar>
 Foam::polyMeshToFeMesh::project(const point& p) const
@@ -60,6 +61,41 @@ Foam::vector Foam::polyMeshToFeMesh::toSpace
     const scalar r = mag(radial);
     const vector er = r > SMALL ? radial/r : Zero;
     return v(0)*er + v(1)*axis_;
+}
+
+
+bool Foam::polyMeshToFeMesh::latticePoint
+(
+    const label celli,
+    std::initializer_list<label> corners,
+    point& p
+) const
+{
+    if (lattice_.empty()) return false;
+    const FixedList<point, 27>& L = lattice_[celli];
+    const pointField& pts = mesh_.points();
+    label a = 0, b = 0, c = 0;
+    for (const label pointi : corners)
+    {
+        // the nearest corner of the lattice (0 or 2 in each index)
+        label best = 0;
+        scalar dmin = GREAT;
+        for (const label k : {0, 2, 6, 8, 18, 20, 24, 26})
+        {
+            const scalar d = magSqr(L[k] - pts[pointi]);
+            if (d < dmin)
+            {
+                dmin = d;
+                best = k;
+            }
+        }
+        a += best % 3;
+        b += (best/3) % 3;
+        c += best/9;
+    }
+    const label n = corners.size();
+    p = L[a/n + 3*(b/n) + 9*(c/n)];
+    return true;
 }
 
 
@@ -113,6 +149,19 @@ Foam::polyMeshToFeMesh::polyMeshToFeMesh
         }
         if (axis_[d] < 0) axis_ = -axis_;
     }
+    // Mid-side nodes where blockMesh puts them (curved edges, projected
+    // faces), else on the chords
+    if (nodesPerElement == 9 || nodesPerElement == 27)
+    {
+        string why;
+        lattice_ = blockMeshLattice(mesh, why);
+        if (lattice_.empty())
+        {
+            Info<< "Solid region '" << region << "': mid-side nodes on the"
+                << " cells' chords (" << why.c_str() << ")" << endl;
+        }
+    }
+
     if (nDim == 3)
     {
         if (anyEmpty || anyWedge)
@@ -281,13 +330,27 @@ void Foam::polyMeshToFeMesh::build2D
                 else
                 {
                     const label n = X.size();
-                    X.append(0.5*(X[pointToNode_[e[0]]] + X[pointToNode_[e[1]]]));
+                    point m;
+                    X.append
+                    (
+                        latticePoint(celli, {e[0], e[1]}, m)
+                      ? toPlane(m)
+                      : Eigen::Vector2d
+                        (
+                            0.5*(X[pointToNode_[e[0]]] + X[pointToNode_[e[1]]])
+                        )
+                    );
                     midNode.insert(e, n);
                     block.connectivity.push_back(n);
                 }
             }
             Eigen::Vector2d centre = Eigen::Vector2d::Zero();
             for (label k = 0; k < 4; ++k) centre += 0.25*X[pointToNode_[c[k]]];
+            point m;
+            if (latticePoint(celli, {c[0], c[1], c[2], c[3]}, m))
+            {
+                centre = toPlane(m);
+            }
             block.connectivity.push_back(X.size());
             X.append(centre);
         }

@@ -147,7 +147,13 @@ void Foam::polyMeshToFeMesh::build3D
                 continue;
             }
             const label n = X.size();
-            X.append(0.5*(at(ed[0]) + at(ed[1])));
+            point m;
+            X.append
+            (
+                latticePoint(celli, {ed[0], ed[1]}, m)
+              ? Eigen::Vector3d(m.x(), m.y(), m.z())
+              : Eigen::Vector3d(0.5*(at(ed[0]) + at(ed[1])))
+            );
             midEdge.insert(ed, n);
             block.connectivity.push_back(n);
         }
@@ -158,6 +164,12 @@ void Foam::polyMeshToFeMesh::build3D
             {
                 Eigen::Vector3d c = Eigen::Vector3d::Zero();
                 for (const label p : faces[facei]) c += 0.25*at(p);
+                const face& f = faces[facei];
+                point m;
+                if (latticePoint(celli, {f[0], f[1], f[2], f[3]}, m))
+                {
+                    c = Eigen::Vector3d(m.x(), m.y(), m.z());
+                }
                 midFace[facei] = X.size();
                 X.append(c);
             }
@@ -165,6 +177,17 @@ void Foam::polyMeshToFeMesh::build3D
         }
         Eigen::Vector3d c = Eigen::Vector3d::Zero();
         for (label k = 0; k < 8; ++k) c += 0.125*at(cs[k]);
+        point m;
+        if
+        (
+            latticePoint
+            (
+                celli, {cs[0], cs[1], cs[2], cs[3], cs[4], cs[5], cs[6], cs[7]}, m
+            )
+        )
+        {
+            c = Eigen::Vector3d(m.x(), m.y(), m.z());
+        }
         block.connectivity.push_back(X.size());
         X.append(c);
     }

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Meshes: mid-side nodes of quadratic elements follow blockMesh's curved
+# edges (polyMeshToFeMesh.H, blockMeshLattice.H). A quarter of a thick
+# ring (a = 1, b = 2, plane strain, E = 1000, nu = 0.3) under internal
+# pressure p = 1 on 2 x 3 Q9P3 elements (tests/cases/ring), against Lame's
+# solution (Timoshenko & Goodier, Theory of Elasticity, sec. 28; plane
+# strain): u_r(r) = (1 + nu)/E (p a^2/(b^2 - a^2)) ((1 - 2 nu) r + b^2/r).
+#   1. Mid-side nodes on the arcs: u_r within 0.3 % at both radii.
+#   2. The same mesh without its blockMeshDict: the log says the nodes lie
+#      on the chords, and the error is more than 10 times larger (a
+#      polygonal ring).
+#   3. Radially graded cells (expansion ratio 3): the twice-finer blocks
+#      keep every point, so the nodes still follow the arcs.
+#   4. 3D: the ring extruded one Hex27P4 cell thick (held in z) gives the
+#      2D result (mid-edge, mid-face and centre nodes on the arcs).
+. "$(dirname "$0")/testFunctions"
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamMeshes.XXXXXX")
+lame() { calc "1.3e-3*(1/3)*(0.4*$1 + 4/$1)"; }
+uA=$(lame 1)
+uB=$(lame 2)
+
+# 1. Curved mid-side nodes
+c=$work/curved
+runCopy ring "$c" ring || fail "ring run (see $c/log.formFoam)"
+curved=$(summaryValue "$c" innerUr)
+checkClose "ring, curved nodes: u_r(a) = Lame" "$curved" "$uA" 3e-3
+checkClose "ring, curved nodes: u_r(b) = Lame" "$(summaryValue "$c" outerUr)" "$uB" 3e-3
+grep -q "on the cells' chords" "$c/log.formFoam" \
+    && fail "ring, curved nodes: the log says chords" \
+    || pass "ring, curved nodes: no chord message in the log"
+
+# 2. Chords: the mesh without the dictionary that made it
+rm "$c/system/ring/blockMeshDict"
+(cd "$c" && rm -rf 1 postProcessing && formFoam > log.chords 2>&1) \
+    || fail "ring on chords (see $c/log.chords)"
+grep -q "Solid region 'ring': mid-side nodes on the cells' chords (no system/ring/blockMeshDict)" \
+    "$c/log.chords" && pass "ring, chords: said in the log" \
+    || fail "ring, chords: no message in $c/log.chords"
+chord=$(summaryValue "$c" innerUr)
+checkBelow "ring: chord error > 10 x curved error" \
+    "$(calc "10*abs($curved - $uA)")" "$(calc "abs($chord - $uA)")"
+
+# 3. Graded cells
+c=$work/graded
+runCopy ring "$c" ring \
+    "sed -i 's/simpleGrading (1 1 1)/simpleGrading (3 1 1)/' system/ring/blockMeshDict" \
+    || fail "graded ring run (see $c/log.formFoam)"
+grep -q "on the cells' chords" "$c/log.formFoam" \
+    && fail "graded ring: the log says chords ($c/log.formFoam)" \
+    || pass "graded ring: nodes from the twice-finer blocks"
+checkClose "graded ring: u_r(a) = Lame" "$(summaryValue "$c" innerUr)" "$uA" 3e-3
+
+# 4. 3D
+c=$work/ring3D
+runCopy ring "$c" ring \
+    "sed -i 's/frontAndBack { type empty;/frontAndBack { type patch;/' system/ring/blockMeshDict" \
+    "sed -i 's/^analysisType .*/analysisType solid3D;/; s/^elementType .*/elementType Hex27P4;/' constant/ring/solidProperties" \
+    "sed -i 's/frontAndBack { type empty; }/frontAndBack { type fixedDisplacement; components (z); }/' 0/ring/D" \
+    || fail "3D ring run (see $c/log.formFoam)"
+checkClose "3D ring (Hex27P4): u_r(a) = 2D" "$(summaryValue "$c" innerUr)" "$curved" 1e-8
+rm -rf "$work"
