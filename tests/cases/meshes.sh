@@ -13,6 +13,8 @@
 #      keep every point, so the nodes still follow the arcs.
 #   4. 3D: the ring extruded one Hex27P4 cell thick (held in z) gives the
 #      2D result (mid-edge, mid-face and centre nodes on the arcs).
+#   5. Gmsh: the 3D ring from a Gmsh file of 27-node hexahedra
+#      (gmshToFormFoam), MSH 4.1 and 2.2, and inputs it must refuse.
 . "$(dirname "$0")/testFunctions"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamMeshes.XXXXXX")
@@ -34,7 +36,7 @@ grep -q "on the cells' chords" "$c/log.formFoam" \
 rm "$c/system/ring/blockMeshDict"
 (cd "$c" && rm -rf 1 postProcessing && formFoam > log.chords 2>&1) \
     || fail "ring on chords (see $c/log.chords)"
-grep -q "Solid region 'ring': mid-side nodes on the cells' chords (no system/ring/blockMeshDict)" \
+grep -q "Solid region 'ring': mid-side nodes on the cells' chords (no system/ring/blockMeshDict and no cellLattice" \
     "$c/log.chords" && pass "ring, chords: said in the log" \
     || fail "ring, chords: no message in $c/log.chords"
 chord=$(summaryValue "$c" innerUr)
@@ -59,4 +61,34 @@ runCopy ring "$c" ring \
     "sed -i 's/frontAndBack { type empty; }/frontAndBack { type fixedDisplacement; components (z); }/' 0/ring/D" \
     || fail "3D ring run (see $c/log.formFoam)"
 checkClose "3D ring (Hex27P4): u_r(a) = 2D" "$(summaryValue "$c" innerUr)" "$curved" 1e-8
+
+# 5. Gmsh: the 3D ring as 27-node hexahedra with every node on the exact
+#    cylinders (written by ring/gmsh/writeRingMsh.py as Gmsh writes MSH
+#    4.1 and 2.2), converted by gmshToFormFoam: the same result as the
+#    blockMesh ring (whose arcs put the nodes at the same places), and
+#    refused inputs with a message naming the element
+ring3D=$(summaryValue "$work/ring3D" innerUr)
+for v in 4.1 2.2; do
+    c=$work/gmsh$v
+    runCopy ring "$c" "" \
+        "sed -i 's/^analysisType .*/analysisType solid3D;/; s/^elementType .*/elementType Hex27P4;/' constant/ring/solidProperties" \
+        "sed -i 's/frontAndBack { type empty; }/frontAndBack { type fixedDisplacement; components (z); }/' 0/ring/D" \
+        "rm system/ring/blockMeshDict" \
+        "python3 gmsh/writeRingMsh.py ring.msh --version $v" \
+        "gmshToFormFoam -region ring ring.msh > log.gmshToFormFoam 2>&1" \
+        || fail "Gmsh $v ring run (see $c/log.formFoam)"
+    grep -q "6 hexahedra (27 nodes), 24 points, patches 5(inner outer bottom left frontAndBack)" \
+        "$c/log.gmshToFormFoam" && pass "Gmsh $v: 6 hexahedra and the 5 physical surfaces" \
+        || fail "Gmsh $v: conversion (see $c/log.gmshToFormFoam)"
+    checkClose "Gmsh $v ring: u_r(a) = blockMesh 3D ring" "$(summaryValue "$c" innerUr)" "$ring3D" 1e-9
+done
+c=$work/gmshBad
+mkdir -p "$c" && cp -r "$formFoamTop/tests/cases/ring/." "$c/"
+for bad in "--hex20|20-node hexahedron; export complete second-order elements" \
+           "--tet|is not a hexahedron \\(Gmsh type 4\\)"; do
+    opt=${bad%%|*}
+    (cd "$c" && python3 gmsh/writeRingMsh.py bad.msh $opt \
+        && gmshToFormFoam -region ring bad.msh > log.bad 2>&1)
+    expectFailure "Gmsh input $opt refused" $? "$c/log.bad" "${bad#*|}"
+done
 rm -rf "$work"

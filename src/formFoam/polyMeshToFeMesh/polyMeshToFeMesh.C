@@ -11,7 +11,7 @@ Description
 #include "HashTable.H"
 #include "edge.H"
 #include "quadShape.H"
-#include "blockMeshLattice.H"
+#include "cellLattice.H"
 
 Foam::Vector2D<Foam::scalar>
 Foam::polyMeshToFeMesh::project(const point& p) const
@@ -154,7 +154,7 @@ Foam::polyMeshToFeMesh::polyMeshToFeMesh
     if (nodesPerElement == 9 || nodesPerElement == 27)
     {
         string why;
-        lattice_ = blockMeshLattice(mesh, why);
+        lattice_ = cellLattice(mesh, why);
         if (lattice_.empty())
         {
             Info<< "Solid region '" << region << "': mid-side nodes on the"

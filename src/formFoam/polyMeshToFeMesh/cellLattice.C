@@ -2,16 +2,25 @@
   formFoam: implicit finite-element forming with fluid-structure interaction
 -------------------------------------------------------------------------------
 Description
-    Implementation of blockMeshLattice.H: the 3 x 3 x 3 lattice of every
-    cell of a blockMesh mesh, from its blocks meshed twice as finely.
+    Implementation of cellLattice.H: the 3 x 3 x 3 lattice of every cell
+    of a hexahedral mesh, from gmshToFormFoam's file or from the mesh's
+    blocks meshed twice as finely.
 \*---------------------------------------------------------------------------*/
-#include "blockMeshLattice.H"
+#include "cellLattice.H"
+#include "pointIOField.H"
 #include "blockMesh.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
 #include "Time.H"
 
-Foam::List<Foam::FixedList<Foam::point, 27>> Foam::blockMeshLattice
+namespace
+{
+
+using namespace Foam;
+
+// The lattice from the blocks of system/<region>/blockMeshDict, not yet
+// checked against the mesh
+List<FixedList<point, 27>> blockMeshLattice
 (
     const polyMesh& mesh,
     string& why
@@ -23,7 +32,9 @@ Foam::List<Foam::FixedList<Foam::point, 27>> Foam::blockMeshLattice
         runTime.path()/runTime.system()/mesh.name()/"blockMeshDict";
     if (!isFile(dictPath))
     {
-        why = "no " + ("system"/mesh.name()/"blockMeshDict");
+        why =
+            "no " + ("system"/mesh.name()/"blockMeshDict")
+          + " and no cellLattice from gmshToFormFoam";
         return lattice;
     }
     IOdictionary dict
@@ -124,7 +135,58 @@ Foam::List<Foam::FixedList<Foam::point, 27>> Foam::blockMeshLattice
     {
         why = "the mesh has more cells than " + dictPath.name() + " makes";
         lattice.clear();
-        return lattice;
+    }
+    return lattice;
+}
+
+} // anonymous namespace
+
+
+Foam::List<Foam::FixedList<Foam::point, 27>> Foam::cellLattice
+(
+    const polyMesh& mesh,
+    string& why
+)
+{
+    List<FixedList<point, 27>> lattice;
+    const fileName file =
+        mesh.time().path()/mesh.time().constant()/mesh.name()
+       /polyMesh::meshSubDir/"cellLattice";
+    string source;
+    if (isFile(file) || isFile(file + ".gz"))
+    {
+        source = "constant"/mesh.name()/polyMesh::meshSubDir/"cellLattice";
+        const pointIOField P
+        (
+            IOobject
+            (
+                "cellLattice",
+                mesh.time().constant(),
+                mesh.name()/polyMesh::meshSubDir,
+                mesh.time(),
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        if (P.size() != 27*mesh.nCells())
+        {
+            why =
+                source + " has " + Foam::name(P.size()) + " points, not 27"
+                " per cell of the mesh";
+            return lattice;
+        }
+        lattice.resize(mesh.nCells());
+        forAll(lattice, c)
+        {
+            for (label k = 0; k < 27; ++k) lattice[c][k] = P[27*c + k];
+        }
+    }
+    else
+    {
+        source = "system"/mesh.name()/"blockMeshDict";
+        lattice = blockMeshLattice(mesh, why);
+        if (lattice.empty()) return lattice;
     }
 
     // Every corner of a lattice must be a point of its cell
@@ -145,7 +207,7 @@ Foam::List<Foam::FixedList<Foam::point, 27>> Foam::blockMeshLattice
             {
                 why =
                     "cell " + Foam::name(c) + " is not where "
-                  + dictPath.name() + " puts it (a renumbered or edited mesh?)";
+                  + source + " puts it (a renumbered or edited mesh?)";
                 lattice.clear();
                 return lattice;
             }
