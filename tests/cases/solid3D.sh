@@ -13,6 +13,8 @@
 #   3. Restart in 3D with plastic history: a torsion of the top face
 #      (elastoPlastic, Swift hardening) restarted from t = 0.5 ends where
 #      the uninterrupted run ends.
+#   4. Dead traction along z on the top face, linear elastic: the exact
+#      uniaxial state.
 . "$(dirname "$0")/testFunctions"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamSolid3D.XXXXXX")
@@ -69,4 +71,20 @@ for e in cornerX cornerY cornerZ bottomReactionZ; do
     checkClose "torsion restarted at 0.5: $e as uninterrupted" \
         "$(summaryValue "$c" $e)" "${full[$e]}" 1e-9
 done
+
+# 4. Dead traction through the case layer: linear elastic, symmetry planes
+#    x = 0, y = 0, z = 0 and a traction sigma = 5 along z on the top: the
+#    uniaxial state, exact in the element space: u_z(top) = sigma L/E,
+#    u_x(x = 1) = -nu sigma/E, and the reaction balances sigma * 1 * 1
+c=$work/traction
+runCopy block3D "$c" block \
+    "sed -i 's/type        neoHookean;/type        linearElastic;/' constant/block/solidProperties" \
+    "sed -i '/^    bottom /,/translation/d' 0/block/D" \
+    "sed -i 's/^    xMin .*/    xMin { type fixedDisplacement; components (x); }\n    bottom { type fixedDisplacement; components (z); }/' 0/block/D" \
+    "sed -i 's/^    yMin .*/    yMin { type fixedDisplacement; components (y); }/' 0/block/D" \
+    "sed -i 's/^    top .*/    top { type traction; traction table ((0 (0 0 0)) (1 (0 0 5))); }/' 0/block/D" \
+    || fail "traction run (see $c/log.formFoam)"
+checkClose "traction: u_z(top) = sigma L/E" "$(summaryValue "$c" cornerZ)" "$(calc "3 + 5*3/1000")" 1e-12
+checkClose "traction: u_x(x = 1) = -nu sigma/E" "$(summaryValue "$c" cornerX)" "$(calc "1 - 0.3*5/1000")" 1e-12
+checkClose "traction: bottom reaction = -sigma A" "$(summaryValue "$c" bottomReactionZ)" -5 1e-9
 rm -rf "$work"

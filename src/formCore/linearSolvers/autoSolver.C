@@ -60,6 +60,12 @@ form::vecX form::autoSolver::solve(const vecX& r)
 }
 
 
+form::linearSolver::factorStats form::autoSolver::stats() const
+{
+    return solver_->stats();
+}
+
+
 double form::autoSolver::factorMemory() const
 {
     return solver_->factorMemory();

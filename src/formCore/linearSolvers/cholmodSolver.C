@@ -124,6 +124,17 @@ double form::cholmodSolver::factorMemory() const
 }
 
 
+form::linearSolver::factorStats form::cholmodSolver::stats() const
+{
+    // From the symbolic analysis: nonzeros of L and the flop count of
+    // the numeric factorisation (CHOLMOD user guide, cholmod_common: lnz,
+    // fl)
+    const cholmod_common& c = impl_->cholmod();
+    if (!impl_->factorised) return {};
+    return {c.lnz, c.fl};
+}
+
+
 bool form::cholmodSolver::usedMetis() const
 {
     const cholmod_factor* L = impl_->factor();

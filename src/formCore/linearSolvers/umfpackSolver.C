@@ -147,6 +147,19 @@ form::vecX form::umfpackSolver::solve(const vecX& r)
 }
 
 
+form::linearSolver::factorStats form::umfpackSolver::stats() const
+{
+    // UMFPACK user guide, Info array of umfpack_numeric: nonzeros of L
+    // and U, flop count
+    if (!impl_->factorised) return {};
+    return
+    {
+        impl_->lu.infoValue(UMFPACK_LNZ) + impl_->lu.infoValue(UMFPACK_UNZ),
+        impl_->lu.infoValue(UMFPACK_FLOPS)
+    };
+}
+
+
 double form::umfpackSolver::factorMemory() const
 {
     if (!impl_->factorised || !impl_->lu.numeric()) return 0;

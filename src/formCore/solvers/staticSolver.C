@@ -132,6 +132,9 @@ vecX staticSolver::solveLinear(const vecX& rhs)
         throw;
     }
     times.factorisation += secondsSince(start);
+    const linearSolver::factorStats st = solver_.stats();
+    times.factorFlops += st.flops;
+    times.factorNonzeros = st.nonzeros;
 
     start = std::chrono::steady_clock::now();
     vecX dU = solver_.solve(rhs);

@@ -902,6 +902,10 @@ void Foam::formScene::run()
         << "    factorisation   " << t.factorisation << nl
         << "    solve           " << t.solve << nl
         << "    factorisations  " << t.factorisations << " (count)" << nl
+        << "    factor nonzeros " << t.factorNonzeros << " (last)" << nl
+        << "    factor flops    " << t.factorFlops << " (total, "
+        << (t.factorisation > 0 ? 1e-9*t.factorFlops/t.factorisation : 0)
+        << " GFLOP/s)" << nl
         << "    output          " << t.output << nl
         << "    total (wall)    " << wallTime << nl
         << "    steps " << totals_.steps << ", Newton iterations "

@@ -271,7 +271,7 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
                         << " at t = " << t << " has an out-of-plane (z)"
                         << " component in a 2D analysis" << exit(FatalError);
                 }
-                return form::vec3(v.x(), v.y(), 0);
+                return form::vec3(v.x(), v.y(), v.z());
             }
         );
     }
