@@ -1,0 +1,324 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    Implementation of rigidSurface.H: closest-point projections onto
+    planes, spheres, cylinders, extruded and revolved profiles, and the
+    tangent frame of a projection.
+\*---------------------------------------------------------------------------*/
+#include "rigidSurface.H"
+#include "formError.H"
+#include <cmath>
+
+namespace form
+{
+
+namespace
+{
+
+mat3 skew(const vec3& a)
+{
+    mat3 W;
+    W << 0, -a(2), a(1), a(2), 0, -a(0), -a(1), a(0), 0;
+    return W;
+}
+
+
+class plane : public rigidSurface
+{
+    vec3 p_, n_;
+public:
+    explicit plane(const surfaceInput& in)
+    :
+        p_(in.vector("point")),
+        n_(in.direction("normal"))
+    {}
+    std::string type() const override { return "plane"; }
+    surfaceProjection project(const vec3& y) const override
+    {
+        surfaceProjection P;
+        P.gap = n_.dot(y - p_);
+        P.normal = n_;
+        return P;
+    }
+};
+
+
+// Sphere (axis = zero) or cylinder: distance from a point or a line
+class roundSurface : public rigidSurface
+{
+    vec3 c_;
+    mat3 Pa_;       //!< projection onto the plane normal to the axis
+    double R_;
+    bool cylinder_;
+public:
+    roundSurface(const surfaceInput& in, bool cylinder)
+    :
+        c_(in.vector(cylinder ? "point" : "centre")),
+        Pa_(mat3::Identity()),
+        R_(in.positive("radius")),
+        cylinder_(cylinder)
+    {
+        if (cylinder)
+        {
+            const vec3 a = in.direction("axis");
+            Pa_ -= a*a.transpose();
+        }
+    }
+    std::string type() const override
+    {
+        return cylinder_ ? "cylinder" : "sphere";
+    }
+    surfaceProjection project(const vec3& y) const override
+    {
+        surfaceProjection P;
+        const vec3 d = Pa_*(y - c_);
+        const double L = d.norm();
+        P.gap = L - R_;
+        if (L > 0)
+        {
+            P.normal = d/L;
+            P.dNormalDY = (Pa_ - P.normal*P.normal.transpose())/L;
+        }
+        else
+        {
+            // at the centre (axis): any direction normal to the axis
+            P.normal = Pa_.col(0).norm() > 0.5 ? vec3(Pa_.col(0).normalized())
+                     : vec3(Pa_.col(1).normalized());
+        }
+        return P;
+    }
+};
+
+
+class extrudedProfile : public rigidSurface
+{
+    std::shared_ptr<rigidProfile> profile_;
+    vec3 o_;
+    Eigen::Matrix<double, 3, 2> Q_;
+public:
+    explicit extrudedProfile(const surfaceInput& in)
+    :
+        profile_(in.profile),
+        o_(in.vector("origin"))
+    {
+        if (!profile_)
+        {
+            throw inputError("profile", "extrudedProfile needs a profile");
+        }
+        const vec3 u = in.direction("xAxis");
+        vec3 v = in.direction("yAxis");
+        v -= u*u.dot(v);
+        if (!(v.norm() > 1e-6))
+        {
+            throw inputError("yAxis", "yAxis is parallel to xAxis");
+        }
+        Q_.col(0) = u;
+        Q_.col(1) = v.normalized();
+    }
+    std::string type() const override { return "extrudedProfile"; }
+    surfaceProjection project(const vec3& y) const override
+    {
+        const profileProjection q =
+            profile_->project(Q_.transpose()*(y - o_));
+        surfaceProjection P;
+        P.gap = q.gap;
+        P.normal = Q_*q.normal;
+        P.dNormalDY = Q_*q.dNormalDY*Q_.transpose();
+        return P;
+    }
+};
+
+
+class revolvedProfile : public rigidSurface
+{
+    std::shared_ptr<rigidProfile> profile_;
+    vec3 o_, a_;
+public:
+    explicit revolvedProfile(const surfaceInput& in)
+    :
+        profile_(in.profile),
+        o_(in.vector("origin")),
+        a_(in.direction("axis"))
+    {
+        if (!profile_)
+        {
+            throw inputError("profile", "revolvedProfile needs a profile");
+        }
+    }
+    std::string type() const override { return "revolvedProfile"; }
+    surfaceProjection project(const vec3& y) const override
+    {
+        const vec3 d = y - o_;
+        const double z = a_.dot(d);
+        const vec3 radial = d - z*a_;
+        const double r = radial.norm();
+        // radial direction; on the axis any normal to it
+        vec3 er;
+        if (r > 1e-12*(1 + d.norm()))
+        {
+            er = radial/r;
+        }
+        else
+        {
+            const vec3 trial =
+                std::abs(a_(0)) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0);
+            er = (trial - a_*a_.dot(trial)).normalized();
+        }
+        const vec3 et = a_.cross(er);
+        const profileProjection q = profile_->project(Eigen::Vector2d(r, z));
+        Eigen::Matrix<double, 3, 2> B;
+        B.col(0) = er;
+        B.col(1) = a_;
+        surfaceProjection P;
+        P.gap = q.gap;
+        P.normal = B*q.normal;
+        // n_r/r, its limit dn_r/dr on the axis
+        const double nrOverR =
+            r > 1e-12*(1 + d.norm()) ? q.normal(0)/r : q.dNormalDY(0, 0);
+        P.dNormalDY =
+            B*q.dNormalDY*B.transpose() + nrOverR*et*et.transpose();
+        return P;
+    }
+};
+
+
+const bool registered = []()
+{
+    auto& reg = rigidSurface::registry();
+    reg["plane"] = [](const surfaceInput& in)
+    {
+        return std::unique_ptr<rigidSurface>(new plane(in));
+    };
+    reg["sphere"] = [](const surfaceInput& in)
+    {
+        return std::unique_ptr<rigidSurface>(new roundSurface(in, false));
+    };
+    reg["cylinder"] = [](const surfaceInput& in)
+    {
+        return std::unique_ptr<rigidSurface>(new roundSurface(in, true));
+    };
+    reg["extrudedProfile"] = [](const surfaceInput& in)
+    {
+        return std::unique_ptr<rigidSurface>(new extrudedProfile(in));
+    };
+    reg["revolvedProfile"] = [](const surfaceInput& in)
+    {
+        return std::unique_ptr<rigidSurface>(new revolvedProfile(in));
+    };
+    return true;
+}();
+
+} // anonymous namespace
+
+
+vec3 surfaceInput::vector(const std::string& name) const
+{
+    const auto it = vectors.find(name);
+    if (it == vectors.end())
+    {
+        throw inputError(name, "missing entry '" + name + "'");
+    }
+    if (!it->second.allFinite())
+    {
+        throw inputError(name, "entry '" + name + "' is not finite");
+    }
+    return it->second;
+}
+
+
+vec3 surfaceInput::direction(const std::string& name) const
+{
+    const vec3 v = vector(name);
+    if (!(v.norm() > 0))
+    {
+        throw inputError(name, "entry '" + name + "' is not a direction (zero)");
+    }
+    return v.normalized();
+}
+
+
+double surfaceInput::positive(const std::string& name) const
+{
+    const auto it = scalars.find(name);
+    if (it == scalars.end())
+    {
+        throw inputError(name, "missing entry '" + name + "'");
+    }
+    if (!(it->second > 0) || !std::isfinite(it->second))
+    {
+        throw inputError
+        (
+            name, "entry '" + name + "' = " + std::to_string(it->second)
+          + " must be positive"
+        );
+    }
+    return it->second;
+}
+
+
+std::map<std::string, rigidSurface::factoryFn>& rigidSurface::registry()
+{
+    static std::map<std::string, factoryFn> table;
+    return table;
+}
+
+
+std::string rigidSurface::validTypes()
+{
+    (void)registered;
+    std::string names;
+    for (const auto& e : registry())
+    {
+        names += (names.empty() ? "" : " ") + e.first;
+    }
+    return names;
+}
+
+
+std::unique_ptr<rigidSurface> rigidSurface::New
+(
+    const std::string& type,
+    std::map<std::string, vec3> vectors,
+    std::map<std::string, double> scalars,
+    std::shared_ptr<rigidProfile> profile
+)
+{
+    (void)registered;
+    const auto it = registry().find(type);
+    if (it == registry().end())
+    {
+        throw inputError
+        (
+            "type",
+            "unknown surface type '" + type + "'; valid: " + validTypes()
+        );
+    }
+    surfaceInput in{std::move(vectors), std::move(scalars), std::move(profile)};
+    return it->second(in);
+}
+
+
+tangentFrame tangentFrame::of(const surfaceProjection& P, const vec3& ref)
+{
+    tangentFrame F;
+    const vec3& n = P.normal;
+    const vec3 w = ref - n*n.dot(ref);
+    const double L = w.norm();
+    if (!(L > 1e-8*ref.norm()))
+    {
+        throw numericalError
+        (
+            "tangentFrame: the reference direction is parallel to the normal"
+        );
+    }
+    F.t1 = w/L;
+    F.t2 = n.cross(F.t1);
+    const mat3& dN = P.dNormalDY;
+    const mat3 dW = -n.dot(ref)*dN - n*(ref.transpose()*dN);
+    F.dT1DY = (mat3::Identity() - F.t1*F.t1.transpose())*dW/L;
+    F.dT2DY = -skew(F.t1)*dN + skew(n)*F.dT1DY;
+    return F;
+}
+
+} // namespace form

@@ -1,0 +1,186 @@
+// Rigid tool surfaces in 3D (rigidSurface.H): the plane, sphere and
+// cylinder in closed form, 2D profiles extruded along a direction and
+// revolved about an axis (through the tested rigidProfile projection with
+// exact curvature). For each: the gap against a brute-force distance to
+// the surface, the normal, and dg/dy = n, dn/dy against central
+// differences at random points on both sides of the surface; the
+// tangent frame (tangentFrame) and its derivatives. FD tolerances about
+// 10 x the largest observed error (fdCheck.H; margins in the log).
+#include "rigidSurface.H"
+#include "formError.H"
+#include <gtest/gtest.h>
+#include <cmath>
+#include <random>
+#include "../fdCheck.H"
+
+using namespace form;
+
+namespace
+{
+
+// dn/dy and dg/dy = n by central differences at y
+void checkDerivatives
+(
+    const rigidSurface& s,
+    const vec3& y,
+    const std::string& what
+)
+{
+    const surfaceProjection P = s.project(y);
+    const double h = 1e-6;
+    mat3 dN;
+    vec3 dG;
+    for (int j = 0; j < 3; ++j)
+    {
+        vec3 yp = y, ym = y;
+        yp(j) += h;
+        ym(j) -= h;
+        const surfaceProjection a = s.project(yp), b = s.project(ym);
+        dN.col(j) = (a.normal - b.normal)/(2*h);
+        dG(j) = (a.gap - b.gap)/(2*h);
+    }
+    EXPECT_NEAR(P.normal.norm(), 1, 1e-13) << what;
+    EXPECT_TRUE(test::fdError("rigidSurface dg/dy = n", (dG - P.normal).norm()/(1 + y.norm()), 1e-9))
+        << what << " y " << y.transpose();
+    EXPECT_TRUE(test::fdError("rigidSurface dn/dy", (dN - P.dNormalDY).norm()/(1 + dN.norm()), 3e-9))
+        << what << " y " << y.transpose() << "\nFD\n" << dN << "\nanalytic\n" << P.dNormalDY;
+    // The closest point y - g n lies on the surface: its gap is zero
+    EXPECT_NEAR(s.project(y - P.gap*P.normal).gap, 0, 1e-10) << what;
+}
+
+} // anonymous namespace
+
+
+TEST(rigidSurface, planeSphereCylinderInClosedForm)
+{
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const auto plane = rigidSurface::New
+    ("plane", {{"point", vec3(1, 2, 3)}, {"normal", vec3(0.2, -0.3, 1)}}, {});
+    const auto sphere = rigidSurface::New
+    ("sphere", {{"centre", vec3(0.5, 0, -1)}}, {{"radius", 2.0}});
+    const auto cylinder = rigidSurface::New
+    ("cylinder", {{"point", vec3(0, 1, 0)}, {"axis", vec3(1, 1, 0)}}, {{"radius", 1.5}});
+    for (int k = 0; k < 20; ++k)
+    {
+        const vec3 y = 3*vec3(u(gen), u(gen), u(gen));
+        // gaps against the geometry
+        const vec3 nP = vec3(0.2, -0.3, 1).normalized();
+        EXPECT_NEAR(plane->project(y).gap, nP.dot(y - vec3(1, 2, 3)), 1e-13);
+        EXPECT_NEAR(sphere->project(y).gap, (y - vec3(0.5, 0, -1)).norm() - 2, 1e-13);
+        const vec3 a = vec3(1, 1, 0).normalized(), d = y - vec3(0, 1, 0);
+        EXPECT_NEAR(cylinder->project(y).gap, (d - a*a.dot(d)).norm() - 1.5, 1e-13);
+        checkDerivatives(*plane, y, "plane");
+        checkDerivatives(*sphere, y, "sphere");
+        checkDerivatives(*cylinder, y, "cylinder");
+    }
+}
+
+TEST(rigidSurface, extrudedProfileIsTheProfileInEveryPlane)
+{
+    // A die shoulder: top face, fillet R = 5, wall; extruded along z
+    const auto die = rigidSurface::New
+    (
+        "extrudedProfile",
+        {{"origin", vec3(0, 0, 0)}, {"xAxis", vec3(1, 0, 0)}, {"yAxis", vec3(0, 1, 0)}},
+        {},
+        std::make_shared<rigidProfile>
+        (
+            std::vector<Eigen::Vector2d>{{100, 0}, {40, 0}, {40, -50}},
+            std::vector<double>{5}
+        )
+    );
+    const rigidProfile outline({{100, 0}, {40, 0}, {40, -50}}, {5});
+    std::mt19937 gen(9);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int k = 0; k < 30; ++k)
+    {
+        // points around the fillet (centre (45, -5))
+        const vec3 y(45 + 8*u(gen), -5 + 8*u(gen), 20*u(gen));
+        const surfaceProjection P = die->project(y);
+        const profileProjection q = outline.project(Eigen::Vector2d(y(0), y(1)));
+        EXPECT_NEAR(P.gap, q.gap, 1e-12);
+        EXPECT_NEAR(P.normal(2), 0, 1e-15);
+        checkDerivatives(*die, y, "extruded die");
+    }
+}
+
+TEST(rigidSurface, revolvedProfileMakesASphericalPunch)
+{
+    // The ball of radius 2 about (0, 0, 1) as a revolved outline in the
+    // (r, z) half-plane: (0, -1) -> (2, -1) -> (2, 3) -> (0, 3) with
+    // fillets of radius 2 at the two corners (each uses its segments
+    // whole): two quarter circles about (0, 1), the tool on the left
+    const std::vector<Eigen::Vector2d> pts{{0, -1}, {2, -1}, {2, 3}, {0, 3}};
+    const auto ball = rigidSurface::New
+    (
+        "revolvedProfile",
+        {{"origin", vec3(0, 0, 0)}, {"axis", vec3(0, 0, 1)}},
+        {},
+        std::make_shared<rigidProfile>(pts, std::vector<double>{2, 2})
+    );
+    const auto sphere = rigidSurface::New
+    ("sphere", {{"centre", vec3(0, 0, 1)}}, {{"radius", 2.0}});
+    std::mt19937 gen(21);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int k = 0; k < 30; ++k)
+    {
+        const vec3 y = vec3(0, 0, 1) + 3.5*vec3(u(gen), u(gen), u(gen));
+        const surfaceProjection P = ball->project(y), S = sphere->project(y);
+        EXPECT_NEAR(P.gap, S.gap, 1e-12) << y.transpose();
+        EXPECT_LT((P.normal - S.normal).norm(), 1e-12) << y.transpose();
+        checkDerivatives(*ball, y, "revolved ball");
+    }
+    // on the axis: finite derivatives, the sphere's
+    const vec3 pole(0, 0, 3.5);
+    EXPECT_LT((ball->project(pole).dNormalDY - sphere->project(pole).dNormalDY).norm(), 1e-9);
+}
+
+TEST(rigidSurface, tangentFrameAndItsDerivatives)
+{
+    std::mt19937 gen(4);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const auto sphere = rigidSurface::New
+    ("sphere", {{"centre", vec3(0.5, 0, -1)}}, {{"radius", 2.0}});
+    const vec3 ref(0.3, 0.9, -0.2);
+    for (int k = 0; k < 20; ++k)
+    {
+        const vec3 y = 3*vec3(u(gen), u(gen), u(gen));
+        const surfaceProjection P = sphere->project(y);
+        const tangentFrame F = tangentFrame::of(P, ref);
+        EXPECT_NEAR(F.t1.dot(P.normal), 0, 1e-14);
+        EXPECT_NEAR(F.t2.dot(P.normal), 0, 1e-14);
+        EXPECT_NEAR(F.t1.dot(F.t2), 0, 1e-14);
+        EXPECT_LT((F.t1.cross(F.t2) - P.normal).norm(), 1e-14);
+        const double h = 1e-6;
+        mat3 d1, d2;
+        for (int j = 0; j < 3; ++j)
+        {
+            vec3 yp = y, ym = y;
+            yp(j) += h;
+            ym(j) -= h;
+            const tangentFrame a = tangentFrame::of(sphere->project(yp), ref);
+            const tangentFrame b = tangentFrame::of(sphere->project(ym), ref);
+            d1.col(j) = (a.t1 - b.t1)/(2*h);
+            d2.col(j) = (a.t2 - b.t2)/(2*h);
+        }
+        EXPECT_TRUE(test::fdError("tangentFrame dt1/dy", (d1 - F.dT1DY).norm()/(1 + d1.norm()), 3e-9));
+        EXPECT_TRUE(test::fdError("tangentFrame dt2/dy", (d2 - F.dT2DY).norm()/(1 + d2.norm()), 3e-9));
+    }
+}
+
+TEST(rigidSurface, badInputNamesTheEntry)
+{
+    EXPECT_THROW(rigidSurface::New("torus", {}, {}), inputError);
+    EXPECT_THROW
+    (
+        rigidSurface::New("sphere", {{"centre", vec3(0, 0, 0)}}, {{"radius", -1.0}}),
+        inputError
+    );
+    EXPECT_THROW
+    (
+        rigidSurface::New("plane", {{"point", vec3(0, 0, 0)}, {"normal", vec3(0, 0, 0)}}, {}),
+        inputError
+    );
+    EXPECT_THROW(rigidSurface::New("sphere", {}, {{"radius", 1.0}}), inputError);
+}
