@@ -41,13 +41,14 @@ contactModel::contactModel
     m.dofs = dofMap::of(mesh);
     m.nDofs = m.dofs.nDofs();
 
-    if (mesh.nDim != 2 || analysis == analysisType::solid3D)
+    m.nDim = mesh.nDim;
+    if ((mesh.nDim == 3) != (analysis == analysisType::solid3D))
     {
         throw inputError
         (
             "contact",
-            "contact with rigid profiles is implemented for 2D (plane strain"
-            " and axisymmetric) models only"
+            "contact: a " + std::to_string(mesh.nDim) + "D mesh in a "
+          + analysisTypeName(analysis) + " analysis"
         );
     }
     if (!(modulus > 0))
@@ -56,9 +57,18 @@ contactModel::contactModel
     }
     for (const rigidToolSpec& t : m.tools)
     {
-        if (!t.profile)
+        if (m.nDim == 2 && !t.profile)
         {
             throw inputError(t.name, "tool '" + t.name + "' has no profile");
+        }
+        if (m.nDim == 3 && !t.surface)
+        {
+            throw inputError
+            (
+                t.name,
+                "tool '" + t.name + "' has no surface (a 3D model's tools"
+                " are surfaces)"
+            );
         }
         if (t.forceControlled)
         {
@@ -122,6 +132,16 @@ contactModel::contactModel
                 " patch"
             );
         }
+        if (ps.tool.empty() && m.nDim == 3)
+        {
+            throw inputError
+            (
+                ps.name,
+                "pair '" + ps.name + "': contact with deformable targets"
+                " is implemented for 2D models only; in 3D a pair needs a"
+                " rigid tool"
+            );
+        }
         if (ps.tool.empty())
         {
             p.tool = -1;
@@ -163,6 +183,14 @@ contactModel::contactModel
                     );
                 }
             }
+            if (m.nDim == 3)
+            {
+                // a quad face: its diagonal over sqrt(2), over the node
+                // intervals of an edge (1 for 4 nodes, 2 for 9)
+                lengthSum += L/std::sqrt(2.0);
+                nSpacings += int(std::lround(std::sqrt(double(n)))) - 1;
+                continue;
+            }
             lengthSum += L;
             nSpacings += n - 1;
         }
@@ -172,7 +200,7 @@ contactModel::contactModel
             radiusSum += std::abs(mesh.X(node, 0));
             ++nRadius;
         }
-        p.perNode = p.mu > 0 ? 2 : 1;
+        p.perNode = p.mu > 0 ? m.nDim : 1;
         p.first = nUnknowns;
         nUnknowns += p.perNode*int(p.nodes.size());
         p.xiCommitted.assign(p.nodes.size(), 0);
@@ -181,6 +209,9 @@ contactModel::contactModel
         p.status.assign(p.nodes.size(), -1);
         p.edge.assign(p.nodes.size(), -1);
         p.flips.assign(p.nodes.size(), 0);
+        p.cCommitted.assign(p.nodes.size(), vec3::Zero());
+        p.slip3.assign(p.nodes.size(), vec3::Zero());
+        p.ref.assign(p.nodes.size(), vec3::UnitX());
         m.pairs.push_back(std::move(p));
     }
     m.toolUnknown.assign(m.tools.size(), -1);
@@ -189,11 +220,13 @@ contactModel::contactModel
         if (m.tools[T].forceControlled) m.toolUnknown[T] = nUnknowns++;
     }
     m.toolReleased.assign(m.tools.size(), false);
-    m.toolForce.assign(m.tools.size(), Eigen::Vector2d::Zero());
+    m.toolForce.assign(m.tools.size(), vec3::Zero());
 
     const double spacing = nSpacings ? lengthSum/nSpacings : 1.0;
     m.spacing = spacing;
-    double depth = 1;
+    // k scales lambda to a length: per unit depth (plane strain), per
+    // full ring (axisymmetric), per tributary length (3D: a nodal force)
+    double depth = m.nDim == 3 ? spacing : 1;
     if (analysis == analysisType::axisymmetric)
     {
         const double rbar = nRadius ? radiusSum/nRadius : 0;
@@ -298,7 +331,7 @@ void contactModel::impl::approach(int T, double t1, const vecX& U)
     const int iz = toolUnknown[T];
     for (int pass = 0; pass < 20; ++pass)
     {
-        const Eigen::Vector2d d = translation(T, t1);
+        const vec3 d = translation(T, t1);
         double best = std::numeric_limits<double>::infinity();
         bool anyAhead = false;
         for (const pairData& p : pairs)
@@ -306,12 +339,26 @@ void contactModel::impl::approach(int T, double t1, const vecX& U)
             if (p.tool != T) continue;
             for (int node : p.nodes)
             {
-                const profileProjection P =
-                    tool.profile->project(position(node, U) - d);
-                const double ne = P.normal.dot(tool.direction);
+                double gap, ne;
+                if (nDim == 3)
+                {
+                    const surfaceProjection P =
+                        tool.surface->project(position3(node, U) - d);
+                    gap = P.gap;
+                    ne = P.normal.dot(tool.direction);
+                }
+                else
+                {
+                    const profileProjection P = tool.profile->project
+                    (
+                        position(node, U) - d.head<2>()
+                    );
+                    gap = P.gap;
+                    ne = P.normal.dot(tool.direction.head<2>());
+                }
                 if (ne < 0.1) continue;
                 anyAhead = true;
-                best = std::min(best, P.gap/ne);
+                best = std::min(best, gap/ne);
             }
         }
         if (!anyAhead)
@@ -326,7 +373,9 @@ void contactModel::impl::approach(int T, double t1, const vecX& U)
                 tool.name,
                 "force-controlled tool '" + tool.name + "' moves along ("
               + formatNumber(tool.direction(0)) + " "
-              + formatNumber(tool.direction(1)) + ") but no contactor node"
+              + formatNumber(tool.direction(1))
+              + (nDim == 3 ? " " + formatNumber(tool.direction(2)) : "")
+              + ") but no contactor node"
                 " of its pairs (" + pairNames + " ) lies ahead of it: it"
                 " would never touch the body"
             );
@@ -420,8 +469,10 @@ int contactModel::impl::updateStatus
             throw numericalError
             (
                 "contact status chattering: node " + std::to_string(node)
-              + " at (" + formatNumber(position(node, U)(0)) + " "
-              + formatNumber(position(node, U)(1)) + ") of pair '"
+              + " at (" + formatNumber(position3(node, U)(0)) + " "
+              + formatNumber(position3(node, U)(1))
+              + (nDim == 3 ? " " + formatNumber(position3(node, U)(2)) : "")
+              + ") of pair '"
               + pairSpecs[&p - pairs.data()].name
               + "' switched between open and closed "
               + std::to_string(p.flips[a]) + " times in this step"
@@ -458,7 +509,7 @@ void contactModel::evaluate
     r.setZero(nUnknowns());
     m.tEvaluated = t;
     m.nClosed = 0;
-    std::fill(m.toolForce.begin(), m.toolForce.end(), Eigen::Vector2d::Zero());
+    std::fill(m.toolForce.begin(), m.toolForce.end(), vec3::Zero());
     m.friction.setZero(fext.size());
 
     const auto add = [K](int i, int j, double v)
@@ -486,10 +537,15 @@ void contactModel::evaluate
             }
             continue;
         }
+        if (m.nDim == 3)
+        {
+            m.evaluateRigid3D(p, t, dt, U, fext, r, K);
+            continue;
+        }
         const rigidToolSpec& tool = m.tools[T];
-        const Eigen::Vector2d d = m.translation(T, t);
+        const Eigen::Vector2d d = m.translation2(T, t);
         const int iz = m.toolUnknown[T];
-        const Eigen::Vector2d e = tool.direction;
+        const Eigen::Vector2d e = tool.direction.head<2>();
 
         for (int a = 0; a < nNodes; ++a)
         {
@@ -519,7 +575,7 @@ void contactModel::evaluate
             const Eigen::Vector2d f = k*(lambda*n + tau*tv);
             m.dofs.add2(fext, node, f);
             m.dofs.add2(m.friction, node, k*tau*tv);
-            m.toolForce[T] += f;
+            m.toolForce[T].head<2>() += f;
             r(il) = k*c.w;
 
             m.updateStatus(p, a, lambda, P.gap, U, K != nullptr);
@@ -614,6 +670,12 @@ void contactModel::commit(const vecX& U)
     impl& m = *impl_;
     m.xCommitted = m.x;
     m.tCommitted = m.tEvaluated;
+    if (m.nDim == 3)
+    {
+        for (auto& p : m.pairs) m.commit3D(p, U);
+        m.Ucommitted = U;
+        return;
+    }
     std::vector<std::vector<double>> xiOld;
     for (const auto& p : m.pairs) xiOld.push_back(p.xiCommitted);
     m.initialiseXi(U, m.tCommitted);
@@ -675,11 +737,30 @@ std::vector<std::pair<int, double>> contactModel::releaseTool
     impl& m = *impl_;
     const int T = m.findTool(tool);
     std::vector<std::pair<int, double>> forces;
-    const Eigen::Vector2d d = m.translation(T, m.tCommitted);
+    const Eigen::Vector2d d = m.translation2(T, m.tCommitted);
     for (impl::pairData& p : m.pairs)
     {
         if (p.tool != T || !p.active) continue;
-        for (std::size_t a = 0; a < p.nodes.size(); ++a)
+        for (std::size_t a = 0; a < p.nodes.size() && m.nDim == 3; ++a)
+        {
+            const int node = p.nodes[a];
+            const surfaceProjection P = m.tools[T].surface->project
+            (
+                m.position3(node, U) - m.translation(T, m.tCommitted)
+            );
+            const int il = p.first + p.perNode*int(a);
+            vec3 f = m.k*m.xCommitted(il)*P.normal;
+            if (p.perNode == 3)
+            {
+                const tangentFrame F = tangentFrame::of(P, p.ref[a]);
+                f += m.k*(m.xCommitted(il + 1)*F.t1 + m.xCommitted(il + 2)*F.t2);
+            }
+            for (int i = 0; i < 3; ++i)
+            {
+                forces.push_back({m.dofs.dof(node, i), f(i)});
+            }
+        }
+        for (std::size_t a = 0; a < p.nodes.size() && m.nDim == 2; ++a)
         {
             const int node = p.nodes[a];
             const profileProjection P =
@@ -726,7 +807,7 @@ const std::vector<contactPairSpec>& contactModel::pairs() const
 }
 
 
-Eigen::Vector2d contactModel::toolTranslation
+vec3 contactModel::toolTranslation
 (
     const std::string& tool,
     double t
@@ -736,7 +817,7 @@ Eigen::Vector2d contactModel::toolTranslation
 }
 
 
-Eigen::Vector2d contactModel::toolForce(const std::string& tool) const
+vec3 contactModel::toolForce(const std::string& tool) const
 {
     return impl_->toolForce[impl_->findTool(tool)];
 }

@@ -39,6 +39,17 @@ std::vector<contactNodeResult> contactModel::pairResults
     for (const std::vector<int>& face : p.faces)
     {
         const int n = int(face.size());
+        if (m.nDim == 3)
+        {
+            matX X(n, 3);
+            for (int a = 0; a < n; ++a)
+            {
+                X.row(a) = m.position3(face[a], U).transpose();
+            }
+            const vecX f = faceLoad::deadTraction(X, vec3(1, 0, 0));
+            for (int a = 0; a < n; ++a) weight[face[a]] += f(3*a);
+            continue;
+        }
         matX X(n, 2);
         for (int a = 0; a < n; ++a) X.row(a) = m.position(face[a], U);
         const vecX f =
@@ -48,15 +59,19 @@ std::vector<contactNodeResult> contactModel::pairResults
 
     std::vector<contactNodeResult> results;
     const Eigen::Vector2d d =
-        p.target ? Eigen::Vector2d::Zero() : m.translation(p.tool, t);
+        p.target ? Eigen::Vector2d::Zero() : m.translation2(p.tool, t);
     for (std::size_t a = 0; a < p.nodes.size(); ++a)
     {
         contactNodeResult res;
         res.node = p.nodes[a];
-        res.x = m.position(res.node, U);
+        res.x = m.position3(res.node, U);
         const int il = p.first + p.perNode*int(a);
         const double lambda = p.active ? m.x(il) : 0.0;
-        const double tau = p.active && p.perNode == 2 ? m.x(il + 1) : 0.0;
+        double tau = p.active && p.perNode == 2 ? m.x(il + 1) : 0.0;
+        if (p.active && p.perNode == 3)
+        {
+            tau = std::hypot(m.x(il + 1), m.x(il + 2));
+        }
         res.normalForce = m.k*lambda;
         res.tangentialForce = m.k*tau;
         res.weight = weight[res.node];
@@ -65,7 +80,7 @@ std::vector<contactNodeResult> contactModel::pairResults
         if (p.target)
         {
             const segmentProjection P =
-                p.target->project(res.x, res.node, U, p.edge[a]);
+                p.target->project(res.x.head<2>(), res.node, U, p.edge[a]);
             res.gap =
                 P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
             res.slip = p.lastSlip[a];
@@ -74,8 +89,21 @@ std::vector<contactNodeResult> contactModel::pairResults
             results.push_back(res);
             continue;
         }
+        if (m.nDim == 3)
+        {
+            const surfaceProjection P = m.tools[p.tool].surface->project
+            (
+                res.x - m.translation(p.tool, t)
+            );
+            res.gap = P.gap;
+            res.slip = p.lastSlip[a];
+            res.slipRate = p.rate[a];
+            res.closed = lambda > P.gap;
+            results.push_back(res);
+            continue;
+        }
         const profileProjection P =
-            m.tools[p.tool].profile->project(res.x - d);
+            m.tools[p.tool].profile->project(res.x.head<2>() - d);
         res.gap = P.gap;
         // Slip over the last step: after a commit (output time) that is
         // the committed step's; during a step, the slip so far
@@ -172,6 +200,14 @@ std::vector<double> contactModel::state() const
         s.insert(s.end(), p.xiCommitted.begin(), p.xiCommitted.end());
         s.push_back(p.active ? 1 : 0);
         s.push_back(p.touched ? 1 : 0);
+        // 3D: closest points, their last slips, reference directions
+        for (std::size_t a = 0; m.nDim == 3 && a < p.nodes.size(); ++a)
+        {
+            for (const vec3* v : {&p.cCommitted[a], &p.slip3[a], &p.ref[a]})
+            {
+                s.insert(s.end(), v->data(), v->data() + 3);
+            }
+        }
     }
     for (bool r : m.toolReleased) s.push_back(r ? 1 : 0);
     s.push_back(m.tCommitted);
@@ -183,7 +219,10 @@ void contactModel::setState(const std::vector<double>& s)
 {
     impl& m = *impl_;
     std::size_t expected = m.x.size() + m.tools.size() + 1;
-    for (const auto& p : m.pairs) expected += p.nodes.size() + 2;
+    for (const auto& p : m.pairs)
+    {
+        expected += p.nodes.size()*(m.nDim == 3 ? 10 : 1) + 2;
+    }
     if (s.size() != expected)
     {
         throw numericalError
@@ -200,6 +239,13 @@ void contactModel::setState(const std::vector<double>& s)
         for (double& xi : p.xiCommitted) xi = s[i++];
         p.active = s[i++] > 0.5;
         p.touched = s[i++] > 0.5;
+        for (std::size_t a = 0; m.nDim == 3 && a < p.nodes.size(); ++a)
+        {
+            for (vec3* v : {&p.cCommitted[a], &p.slip3[a], &p.ref[a]})
+            {
+                for (int c = 0; c < 3; ++c) (*v)(c) = s[i++];
+            }
+        }
     }
     for (std::size_t T = 0; T < m.tools.size(); ++T)
     {

@@ -95,7 +95,7 @@ form::rigidToolSpec Foam::solidContact::readTool
                 << " (x y 0), got " << dir << exit(FatalIOError);
         }
         tool.forceControlled = true;
-        tool.direction = Eigen::Vector2d(dir.x(), dir.y())/m;
+        tool.direction = form::vec3(dir.x()/m, dir.y()/m, 0);
         tool.force = [f](double t) { return f->value(t); };
     }
     else if (td.found("motion"))
@@ -107,7 +107,7 @@ form::rigidToolSpec Foam::solidContact::readTool
         tool.translation = [d](double t)
         {
             const vector v = d->value(t);
-            return Eigen::Vector2d(v.x(), v.y());
+            return form::vec3(v.x(), v.y(), 0);
         };
     }
     return tool;
@@ -138,7 +138,8 @@ void Foam::solidContact::checkOrientation
         if (!tool) continue;
         const Eigen::Vector2d d =
             tool->translation && !tool->forceControlled
-          ? tool->translation(t0) : Eigen::Vector2d::Zero();
+          ? Eigen::Vector2d(tool->translation(t0).head<2>())
+          : Eigen::Vector2d::Zero();
 
         // Outward normals of the patch at its nodes: the sum of the unit
         // normals of its faces, each pointing away from its element
@@ -423,13 +424,20 @@ bool Foam::solidContact::write(const word& timeName, scalar t) const
             << (ps.tool.empty()
                 ? ", target patch " + ps.targetFaceSet : ", tool " + ps.tool)
             << ", time " << t << '\n'
-            << "# node X Y x y gap normalForce tangentialForce weight"
+            << (
+                   solid_.feMesh().feMesh().nDim == 3
+                 ? "# node X Y Z x y z gap"
+                 : "# node X Y x y gap"
+               )
+            << " normalForce tangentialForce weight"
                " pressure shear slip closed slipRate\n";
         const form::feMesh& fe = solid_.feMesh().feMesh();
         for (const auto& r : model_->pairResults(ps.name, U, t))
         {
-            os  << r.node << ' ' << fe.X(r.node, 0) << ' ' << fe.X(r.node, 1)
-                << ' ' << r.x(0) << ' ' << r.x(1) << ' ' << r.gap << ' '
+            os  << r.node;
+            for (int i = 0; i < fe.nDim; ++i) os << ' ' << fe.X(r.node, i);
+            for (int i = 0; i < fe.nDim; ++i) os << ' ' << r.x(i);
+            os  << ' ' << r.gap << ' '
                 << r.normalForce << ' ' << r.tangentialForce << ' '
                 << r.weight << ' ' << r.pressure << ' ' << r.shear << ' '
                 << r.slip << ' ' << (r.closed ? 1 : 0) << ' ' << r.slipRate
@@ -443,7 +451,8 @@ bool Foam::solidContact::write(const word& timeName, scalar t) const
     os << "# tool x y (current outline)\n";
     for (const form::rigidToolSpec& tool : model_->tools())
     {
-        const Eigen::Vector2d d = model_->toolTranslation(tool.name, t);
+        const Eigen::Vector2d d =
+            model_->toolTranslation(tool.name, t).head<2>();
         const double ds = tool.profile->length()/2000;
         for (const Eigen::Vector2d& p : tool.profile->sample(ds))
         {

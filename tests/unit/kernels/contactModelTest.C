@@ -193,14 +193,14 @@ struct contactSetup
         if (forceControlled)
         {
             punch.forceControlled = true;
-            punch.direction = Eigen::Vector2d(0, -1);
+            punch.direction = vec3(0, -1, 0);
             punch.force = [](double t) { return 1e3*t; };
         }
         else
         {
             punch.translation = [](double t)
             {
-                return Eigen::Vector2d(0.3*t, -0.01*t);
+                return vec3(0.3*t, -0.01*t, 0);
             };
         }
         tools.push_back(punch);
@@ -447,7 +447,7 @@ TEST(contactModel, releasingEveryToolLeavesNoActivePair)
 TEST(contactModel, toolThatCannotTouchIsAnInputError)
 {
     contactSetup s(true);
-    s.tools[0].direction = Eigen::Vector2d(0, 1);   // moving away
+    s.tools[0].direction = vec3(0, 1, 0);   // moving away
     contactModel cm = s.model(0, 0, 0);
     const int N = s.mesh.nNodes()*2;
     try
