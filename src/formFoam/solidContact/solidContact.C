@@ -37,13 +37,37 @@ form::rigidToolSpec Foam::solidContact::readTool
     const dictionary& td
 )
 {
+    const bool is3D = solid_.analysis() == form::analysisType::solid3D;
     checkKeywords
     (
-        td, {"profile", "radii", "radius", "motion", "force", "direction"}
+        td,
+        is3D
+      ? wordList{"surface", "motion", "force", "direction"}
+      : wordList{"profile", "radii", "radius", "motion", "force", "direction"}
     );
     form::rigidToolSpec tool;
     tool.name = name;
+    if (is3D)
+    {
+        tool.surface = readSurface
+        (
+            subDictOf(td, "surface", "{ type sphere; centre (0 0 0); radius 1; }")
+        );
+    }
+    else
+    {
+        tool.profile = readProfile(td);
+    }
+    readMotion(tool, td);
+    return tool;
+}
 
+
+std::shared_ptr<form::rigidProfile> Foam::solidContact::readProfile
+(
+    const dictionary& td
+)
+{
     const List<vector2D> pts = td.get<List<vector2D>>("profile");
     std::vector<Eigen::Vector2d> points;
     for (const vector2D& p : pts) points.emplace_back(p.x(), p.y());
@@ -62,16 +86,86 @@ form::rigidToolSpec Foam::solidContact::readTool
     {
         radii.push_back(td.get<scalar>("radius"));
     }
+    std::shared_ptr<form::rigidProfile> profile;
     try
     {
-        tool.profile =
-            std::make_shared<form::rigidProfile>(points, radii);
+        profile = std::make_shared<form::rigidProfile>(points, radii);
     }
     catch (const form::inputError& e)
     {
         fatalInput(td, e);
     }
+    return profile;
+}
 
+
+std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
+(
+    const dictionary& sd
+)
+{
+    const word type = sd.get<word>("type");
+    const std::map<word, wordList> keys
+    {
+        {"plane", {"point", "normal"}},
+        {"sphere", {"centre", "radius"}},
+        {"cylinder", {"point", "axis", "radius"}},
+        {"extrudedProfile", {"origin", "xAxis", "yAxis", "profile", "radii", "radius"}},
+        {"revolvedProfile", {"origin", "axis", "profile", "radii", "radius"}}
+    };
+    const auto it = keys.find(type);
+    if (it == keys.end())
+    {
+        FatalIOErrorInFunction(sd)
+            << "Entry 'type' in " << sd.name() << ": unknown surface type '"
+            << type << "'; valid: " << form::rigidSurface::validTypes().c_str()
+            << exit(FatalIOError);
+    }
+    wordList valid(it->second);
+    valid.append("type");
+    checkKeywords(sd, valid);
+    std::map<std::string, form::vec3> vectors;
+    std::map<std::string, double> scalars;
+    std::shared_ptr<form::rigidProfile> profile;
+    const bool profiled =
+        type == "extrudedProfile" || type == "revolvedProfile";
+    for (const word& k : it->second)
+    {
+        if (k == "profile" || k == "radii") continue;
+        if (k == "radius")
+        {
+            // a sphere's or cylinder's radius; a profile's fillet radius
+            if (!profiled && sd.found(k)) scalars[k] = sd.get<scalar>(k);
+            continue;
+        }
+        if (sd.found(k))
+        {
+            const vector v = sd.get<vector>(k);
+            vectors[k] = form::vec3(v.x(), v.y(), v.z());
+        }
+    }
+    if (profiled) profile = readProfile(sd);
+    std::shared_ptr<form::rigidSurface> surface;
+    try
+    {
+        surface = form::rigidSurface::New(type, vectors, scalars, profile);
+    }
+    catch (const form::inputError& e)
+    {
+        fatalInput(sd, e);
+    }
+    return surface;
+}
+
+
+void Foam::solidContact::readMotion
+(
+    form::rigidToolSpec& tool,
+    const dictionary& td
+) const
+{
+    const word& name = tool.name;
+    const bool is3D = solid_.analysis() == form::analysisType::solid3D;
     if (td.found("force"))
     {
         if (td.found("motion"))
@@ -86,8 +180,16 @@ form::rigidToolSpec Foam::solidContact::readTool
             Function1<scalar>::New("force", td).ptr()
         );
         const vector dir = td.get<vector>("direction");
-        const scalar m = Foam::sqrt(sqr(dir.x()) + sqr(dir.y()));
-        if (m < SMALL || mag(dir.z()) > SMALL*max(m, 1))
+        const scalar m =
+            is3D ? mag(dir) : Foam::sqrt(sqr(dir.x()) + sqr(dir.y()));
+        if (is3D && !(m > SMALL))
+        {
+            FatalIOErrorInFunction(td)
+                << "Entry 'direction' of tool '" << name << "' in "
+                << td.name() << " must be a non-zero vector, got " << dir
+                << exit(FatalIOError);
+        }
+        if (!is3D && (m < SMALL || mag(dir.z()) > SMALL*max(m, 1)))
         {
             FatalIOErrorInFunction(td)
                 << "Entry 'direction' of tool '" << name << "' in "
@@ -95,7 +197,8 @@ form::rigidToolSpec Foam::solidContact::readTool
                 << " (x y 0), got " << dir << exit(FatalIOError);
         }
         tool.forceControlled = true;
-        tool.direction = form::vec3(dir.x()/m, dir.y()/m, 0);
+        tool.direction =
+            form::vec3(dir.x()/m, dir.y()/m, is3D ? dir.z()/m : 0);
         tool.force = [f](double t) { return f->value(t); };
     }
     else if (td.found("motion"))
@@ -104,13 +207,12 @@ form::rigidToolSpec Foam::solidContact::readTool
         (
             Function1<vector>::New("motion", td).ptr()
         );
-        tool.translation = [d](double t)
+        tool.translation = [d, is3D](double t)
         {
             const vector v = d->value(t);
-            return form::vec3(v.x(), v.y(), 0);
+            return form::vec3(v.x(), v.y(), is3D ? v.z() : 0);
         };
     }
-    return tool;
 }
 
 
@@ -128,6 +230,8 @@ void Foam::solidContact::checkOrientation
     const std::vector<form::contactPairSpec>& pairs
 ) const
 {
+    // 3D tools: a surface has no walking direction to get wrong
+    if (solid_.analysis() == form::analysisType::solid3D) return;
     const form::feMesh& fe = solid_.feMesh().feMesh();
     const scalar t0 = runTime_.startTime().value();
     for (const form::contactPairSpec& ps : pairs)
@@ -223,13 +327,6 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
         {"tools", "pairs", "epsilonN", "epsilonT", "stiffness",
          "maxStatusChanges", "frictionLaw", "frictionAugmentation"}
     );
-    if (solid_.analysis() == form::analysisType::solid3D)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Contact in " << dict_.name() << " is available for 2D"
-            << " (plane strain, axisymmetric) regions only"
-            << exit(FatalIOError);
-    }
 
     // Rigid tools (optional when every pair has a deformable target)
     std::vector<form::rigidToolSpec> tools;
@@ -448,6 +545,21 @@ bool Foam::solidContact::write(const word& timeName, scalar t) const
     }
     std::ofstream os(dir/"tools.dat");
     os.precision(10);
+    if (solid_.analysis() == form::analysisType::solid3D)
+    {
+        // 3D: each tool's surface type, translation and force
+        os << "# tool type dx dy dz Fx Fy Fz\n";
+        for (const form::rigidToolSpec& tool : model_->tools())
+        {
+            const form::vec3 d = model_->toolTranslation(tool.name, t);
+            const form::vec3 F = model_->toolForce(tool.name);
+            os << tool.name << ' ' << tool.surface->type() << ' ' << d(0)
+               << ' ' << d(1) << ' ' << d(2) << ' ' << F(0) << ' ' << F(1)
+               << ' ' << F(2) << '\n';
+        }
+        os.flush();
+        return bool(os) && ok;
+    }
     os << "# tool x y (current outline)\n";
     for (const form::rigidToolSpec& tool : model_->tools())
     {
