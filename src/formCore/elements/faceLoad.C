@@ -47,22 +47,7 @@ vecX faceLoad::deadTraction(const matX& X, const vec3& t)
     {
         vecX N;
         matX dN;
-        if (n == 4)
-        {
-            quadShape<4>::vecN N4;
-            quadShape<4>::matN2 dN4;
-            quadShape<4>::eval(q.r, q.s, N4, dN4);
-            N = N4;
-            dN = dN4;
-        }
-        else
-        {
-            quadShape<9>::vecN N9;
-            quadShape<9>::matN2 dN9;
-            quadShape<9>::eval(q.r, q.s, N9, dN9);
-            N = N9;
-            dN = dN9;
-        }
+        quadShapeEval(n, q.r, q.s, N, dN);
         const vec3 Xr = X.transpose()*dN.col(0);
         const vec3 Xs = X.transpose()*dN.col(1);
         const double dA = Xr.cross(Xs).norm()*q.w;
@@ -109,22 +94,7 @@ void faceLoad::followerPressure
     matX dN;
     for (const quadraturePoint2D& q : gaussLegendreQuad(3))
     {
-        if (n == 4)
-        {
-            quadShape<4>::vecN N4;
-            quadShape<4>::matN2 dN4;
-            quadShape<4>::eval(q.r, q.s, N4, dN4);
-            N = N4;
-            dN = dN4;
-        }
-        else
-        {
-            quadShape<9>::vecN N9;
-            quadShape<9>::matN2 dN9;
-            quadShape<9>::eval(q.r, q.s, N9, dN9);
-            N = N9;
-            dN = dN9;
-        }
+        quadShapeEval(n, q.r, q.s, N, dN);
         const vec3 xr = x.transpose()*dN.col(0);
         const vec3 xs = x.transpose()*dN.col(1);
         const vec3 nda = xr.cross(xs)*q.w;

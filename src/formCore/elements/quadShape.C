@@ -67,27 +67,40 @@ template struct quadShape<4>;
 template struct quadShape<9>;
 
 
-vecX quadShapeValues(int nNodes, double r, double s)
+void quadShapeEval(int nNodes, double r, double s, vecX& N, matX& dN)
 {
     if (nNodes == 4)
     {
-        quadShape<4>::vecN N;
-        quadShape<4>::matN2 dN;
-        quadShape<4>::eval(r, s, N, dN);
-        return N;
+        quadShape<4>::vecN N4;
+        quadShape<4>::matN2 dN4;
+        quadShape<4>::eval(r, s, N4, dN4);
+        N = N4;
+        dN = dN4;
+        return;
     }
     if (nNodes == 9)
     {
-        quadShape<9>::vecN N;
-        quadShape<9>::matN2 dN;
-        quadShape<9>::eval(r, s, N, dN);
-        return N;
+        quadShape<9>::vecN N9;
+        quadShape<9>::matN2 dN9;
+        quadShape<9>::eval(r, s, N9, dN9);
+        N = N9;
+        dN = dN9;
+        return;
     }
     throw std::invalid_argument
     (
         "quadShapeValues: " + std::to_string(nNodes) + "-node quad; expected"
         " 4 or 9"
     );
+}
+
+
+vecX quadShapeValues(int nNodes, double r, double s)
+{
+    vecX N;
+    matX dN;
+    quadShapeEval(nNodes, r, s, N, dN);
+    return N;
 }
 
 

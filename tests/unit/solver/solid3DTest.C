@@ -46,7 +46,12 @@ TEST(faceLoad, consistentForcesOnAFlatFace)
 }
 
 
-TEST(solid3D, uniaxialTractionOnAHex27P4Cube)
+namespace
+{
+
+//- One Hex27P4 element on the unit cube [0,1]^3 with the node sets x0,
+//  y0, z0 of its faces x = 0, y = 0, z = 0 (the symmetry planes)
+feMesh unitCube(const std::string& material)
 {
     feMesh mesh;
     mesh.nDim = 3;
@@ -58,17 +63,24 @@ TEST(solid3D, uniaxialTractionOnAHex27P4Cube)
     elementBlock b;
     b.name = "cube";
     b.elementType = "Hex27P4";
-    b.materialName = "steel";
+    b.materialName = material;
     b.nodesPerElement = 27;
     for (int a = 0; a < 27; ++a) b.connectivity.push_back(a);
     mesh.blocks.push_back(b);
-    // Faces r = -1, +1, s = -1, t = -1 of the element: x = 0, x = 1, y = 0,
-    // z = 0
-    const auto nodesOf = [](int face) { return hexFaceNodes(27, face); };
-    mesh.faceSets["right"].push_back({0, 0, 1, nodesOf(1)});
-    mesh.nodeSets["x0"] = nodesOf(0);
-    mesh.nodeSets["y0"] = nodesOf(2);
-    mesh.nodeSets["z0"] = nodesOf(4);
+    mesh.nodeSets["x0"] = hexFaceNodes(27, 0);
+    mesh.nodeSets["y0"] = hexFaceNodes(27, 2);
+    mesh.nodeSets["z0"] = hexFaceNodes(27, 4);
+    return mesh;
+}
+
+} // anonymous namespace
+
+
+TEST(solid3D, uniaxialTractionOnAHex27P4Cube)
+{
+    feMesh mesh = unitCube("steel");
+    // Face r = +1 of the element: x = 1
+    mesh.faceSets["right"].push_back({0, 0, 1, hexFaceNodes(27, 1)});
 
     const double E = 200, nu = 0.3, sigma = 10;
     std::map<std::string, std::shared_ptr<material>> mats;
@@ -110,28 +122,11 @@ TEST(solid3D, uniaxialTractionOnAHex27P4Cube)
 // machine precision with the consistent load stiffness of faceLoad.
 TEST(solid3D, followerPressureCompressesANeoHookeanCube)
 {
-    feMesh mesh;
-    mesh.nDim = 3;
-    mesh.X.resize(27, 3);
-    for (int a = 0; a < 27; ++a)
-    {
-        mesh.X.row(a) = 0.5*(hexShape<27>::node(a) + vec3::Ones()).transpose();
-    }
-    elementBlock b;
-    b.name = "cube";
-    b.elementType = "Hex27P4";
-    b.materialName = "rubber";
-    b.nodesPerElement = 27;
-    for (int a = 0; a < 27; ++a) b.connectivity.push_back(a);
-    mesh.blocks.push_back(b);
-    const auto nodesOf = [](int face) { return hexFaceNodes(27, face); };
+    feMesh mesh = unitCube("rubber");
     for (const int face : {1, 3, 5})
     {
-        mesh.faceSets["loaded"].push_back({0, 0, face, nodesOf(face)});
+        mesh.faceSets["loaded"].push_back({0, 0, face, hexFaceNodes(27, face)});
     }
-    mesh.nodeSets["x0"] = nodesOf(0);
-    mesh.nodeSets["y0"] = nodesOf(2);
-    mesh.nodeSets["z0"] = nodesOf(4);
 
     const double E = 10, nu = 0.3, p = 1.5;
     std::map<std::string, std::shared_ptr<material>> mats;
