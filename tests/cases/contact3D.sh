@@ -25,7 +25,8 @@
 #    shear stays below 0.9 mu p (observed 0.57) and the base centre moves
 #    by less than 1 % of the drag (observed 1e-13).
 # 4. Bad input: a 2D profile for a 3D tool, an unknown surface type, a
-#    sphere without radius, a deformable target in 3D.
+#    sphere without radius, a plane whose normal points into its tool (the
+#    whole patch on the tool's inner side), a deformable target in 3D.
 . "$(dirname "$0")/testFunctions"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamContact3D.XXXXXX")
@@ -104,6 +105,8 @@ bad "unknown surface type" "unknown surface type 'cone'; valid: cylinder extrude
     "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type cone; point (0 0 0);/' constant/contactProperties"
 bad "sphere without radius" "missing entry 'radius'" \
     "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type sphere; centre (0 0 -5);/' constant/contactProperties"
+bad "plane facing into its tool" "Tool 'ground' in .*contactProperties.* turns its back on patch 'bottom' of pair 'blockBottom'" \
+    "sed -i 's/normal (0 0 1);/normal (0 0 -1);/' constant/contactProperties"
 bad "deformable target in 3D" "deformable targets is implemented for 2D models only" \
     "sed -i 's/blockBottom { patch bottom; tool ground; friction 0.3; }/blockBottom { patch bottom; targetPatch top; }/' constant/contactProperties"
 rm -rf "$work"

@@ -230,8 +230,11 @@ void Foam::solidContact::checkOrientation
     const std::vector<form::contactPairSpec>& pairs
 ) const
 {
-    // 3D tools: a surface has no walking direction to get wrong
-    if (solid_.analysis() == form::analysisType::solid3D) return;
+    if (solid_.analysis() == form::analysisType::solid3D)
+    {
+        checkOrientation3D(tools, pairs);
+        return;
+    }
     const form::feMesh& fe = solid_.feMesh().feMesh();
     const scalar t0 = runTime_.startTime().value();
     for (const form::contactPairSpec& ps : pairs)
@@ -302,6 +305,72 @@ void Foam::solidContact::checkOrientation
                 << " towards the body. Reverse the order of the points of"
                 << " tools/" << ps.tool.c_str() << "/profile."
                 << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::solidContact::checkOrientation3D
+(
+    const std::vector<form::rigidToolSpec>& tools,
+    const std::vector<form::contactPairSpec>& pairs
+) const
+{
+    // As in 2D: a surface given inside out (a plane's normal pointing
+    // into the tool) puts every node of the patch on the tool's inner
+    // side, with the tool's outward normal along the body's own
+    const form::feMesh& fe = solid_.feMesh().feMesh();
+    const scalar t0 = runTime_.startTime().value();
+    for (const form::contactPairSpec& ps : pairs)
+    {
+        const form::rigidToolSpec* tool = nullptr;
+        for (const auto& t : tools) if (t.name == ps.tool) tool = &t;
+        if (!tool) continue;
+        const form::vec3 d =
+            tool->translation && !tool->forceControlled
+          ? tool->translation(t0) : form::vec3::Zero();
+        std::map<int, form::vec3> normals;
+        scalar size = 0;
+        for (const form::feFace& f : fe.faceSets.at(ps.faceSet))
+        {
+            // corners counter-clockwise seen from outside (hexFaceNodes)
+            const form::vec3 X0 = fe.X.row(f.nodes[0]).transpose();
+            const form::vec3 X1 = fe.X.row(f.nodes[1]).transpose();
+            const form::vec3 X3 = fe.X.row(f.nodes[3]).transpose();
+            const form::vec3 n = (X1 - X0).cross(X3 - X0);
+            size = max(size, (X1 - X0).norm());
+            if (n.norm() == 0) continue;
+            for (const int node : f.nodes)
+            {
+                normals.emplace(node, form::vec3::Zero()).first->second +=
+                    n.normalized();
+            }
+        }
+        label considered = 0, reversed = 0;
+        for (const auto& nn : normals)
+        {
+            if (nn.second.norm() == 0) continue;
+            const form::surfaceProjection p = tool->surface->project
+            (
+                fe.X.row(nn.first).transpose() - d
+            );
+            ++considered;
+            const scalar c = p.normal.dot(nn.second.normalized());
+            if (c > 0.1 && p.gap <= 1e-9*size) ++reversed;
+        }
+        if (considered > 0 && reversed == considered)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Tool '" << ps.tool.c_str() << "' in " << dict_.name()
+                << " turns its back on patch '" << ps.faceSet.c_str()
+                << "' of pair '" << ps.name.c_str() << "': every node of"
+                << " the patch lies on the tool's inner side (touching or"
+                << " inside it), where the tool's outward normal points the"
+                << " same way as the body's." << nl
+                << "    Rule: a surface's normal points out of the tool,"
+                << " towards the body (a plane's 'normal'; spheres and"
+                << " cylinders are solid; a profile's tool lies on the left"
+                << " of its points)." << exit(FatalIOError);
         }
     }
 }
