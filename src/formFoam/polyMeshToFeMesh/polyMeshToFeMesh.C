@@ -64,6 +64,34 @@ Foam::vector Foam::polyMeshToFeMesh::toSpace
 }
 
 
+void Foam::polyMeshToFeMesh::addBoundaryFace
+(
+    const form::elementBlock& block,
+    label celli,
+    label localFace,
+    const std::vector<int>& localNodes,
+    std::vector<form::feFace>& faceSet,
+    std::vector<int>& nodeSet
+)
+{
+    form::feFace fef;
+    fef.block = 0;
+    fef.element = celli;
+    fef.localFace = localFace;
+    const int* en = block.nodes(celli);
+    for (const int a : localNodes) fef.nodes.push_back(en[a]);
+    for (const int n : fef.nodes) nodeSet.push_back(n);
+    faceSet.push_back(fef);
+}
+
+
+void Foam::polyMeshToFeMesh::uniqueNodes(std::vector<int>& nodeSet)
+{
+    std::sort(nodeSet.begin(), nodeSet.end());
+    nodeSet.erase(std::unique(nodeSet.begin(), nodeSet.end()), nodeSet.end());
+}
+
+
 bool Foam::polyMeshToFeMesh::latticePoint
 (
     const label celli,
@@ -405,20 +433,14 @@ void Foam::polyMeshToFeMesh::build2D
                 }
             }
             if (localEdge < 0) continue;    // face on the axis of a wedge
-            form::feFace fef;
-            fef.block = 0;
-            fef.element = celli;
-            fef.localFace = localEdge;
-            const int* en = block.nodes(celli);
-            for (const int a : form::quadEdgeNodes(nodesPerElement, localEdge))
-            {
-                fef.nodes.push_back(en[a]);
-            }
-            for (const int n : fef.nodes) nodeSet.push_back(n);
-            faceSet.push_back(fef);
+            addBoundaryFace
+            (
+                block, celli, localEdge,
+                form::quadEdgeNodes(nodesPerElement, localEdge),
+                faceSet, nodeSet
+            );
         }
-        std::sort(nodeSet.begin(), nodeSet.end());
-        nodeSet.erase(std::unique(nodeSet.begin(), nodeSet.end()), nodeSet.end());
+        uniqueNodes(nodeSet);
     }
 
     fe_.blocks.push_back(std::move(block));

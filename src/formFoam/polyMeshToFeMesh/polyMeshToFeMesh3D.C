@@ -211,20 +211,14 @@ void Foam::polyMeshToFeMesh::build3D
             {
                 if (cellFaces[celli][k] == facei) local = k;
             }
-            form::feFace fef;
-            fef.block = 0;
-            fef.element = celli;
-            fef.localFace = local;
-            const int* en = block.nodes(celli);
-            for (const int a : form::hexFaceNodes(nodesPerElement, local))
-            {
-                fef.nodes.push_back(en[a]);
-            }
-            for (const int n : fef.nodes) nodeSet.push_back(n);
-            faceSet.push_back(fef);
+            addBoundaryFace
+            (
+                block, celli, local,
+                form::hexFaceNodes(nodesPerElement, local),
+                faceSet, nodeSet
+            );
         }
-        std::sort(nodeSet.begin(), nodeSet.end());
-        nodeSet.erase(std::unique(nodeSet.begin(), nodeSet.end()), nodeSet.end());
+        uniqueNodes(nodeSet);
     }
 
     fe_.blocks.push_back(std::move(block));

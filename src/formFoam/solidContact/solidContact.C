@@ -292,21 +292,33 @@ void Foam::solidContact::checkOrientation
         }
         if (considered > 0 && reversed == considered)
         {
-            FatalIOErrorInFunction(dict_)
-                << "Tool '" << ps.tool.c_str() << "' in " << dict_.name()
-                << " turns its back on patch '" << ps.faceSet.c_str()
-                << "' of pair '" << ps.name.c_str() << "': every node of"
-                << " the patch lies on the tool's inner side (touching or"
-                << " inside it), where the tool's outward normal points the"
-                << " same way as the body's." << nl
-                << "    Rule: walking along the points of 'profile', the"
-                << " tool's solid lies on the LEFT (counter-clockwise"
-                << " around the tool), so that its outward normal points"
-                << " towards the body. Reverse the order of the points of"
-                << " tools/" << ps.tool.c_str() << "/profile."
-                << exit(FatalIOError);
+            reportReversed
+            (
+                ps,
+                "walking along the points of 'profile', the tool's solid"
+                " lies on the LEFT (counter-clockwise around the tool), so"
+                " that its outward normal points towards the body. Reverse"
+                " the order of the points of tools/" + ps.tool + "/profile."
+            );
         }
     }
+}
+
+
+void Foam::solidContact::reportReversed
+(
+    const form::contactPairSpec& ps,
+    const std::string& rule
+) const
+{
+    FatalIOErrorInFunction(dict_)
+        << "Tool '" << ps.tool.c_str() << "' in " << dict_.name()
+        << " turns its back on patch '" << ps.faceSet.c_str()
+        << "' of pair '" << ps.name.c_str() << "': every node of"
+        << " the patch lies on the tool's inner side (touching or"
+        << " inside it), where the tool's outward normal points the"
+        << " same way as the body's." << nl
+        << "    Rule: " << rule.c_str() << exit(FatalIOError);
 }
 
 
@@ -360,17 +372,13 @@ void Foam::solidContact::checkOrientation3D
         }
         if (considered > 0 && reversed == considered)
         {
-            FatalIOErrorInFunction(dict_)
-                << "Tool '" << ps.tool.c_str() << "' in " << dict_.name()
-                << " turns its back on patch '" << ps.faceSet.c_str()
-                << "' of pair '" << ps.name.c_str() << "': every node of"
-                << " the patch lies on the tool's inner side (touching or"
-                << " inside it), where the tool's outward normal points the"
-                << " same way as the body's." << nl
-                << "    Rule: a surface's normal points out of the tool,"
-                << " towards the body (a plane's 'normal'; spheres and"
-                << " cylinders are solid; a profile's tool lies on the left"
-                << " of its points)." << exit(FatalIOError);
+            reportReversed
+            (
+                ps,
+                "a surface's normal points out of the tool, towards the body"
+                " (a plane's 'normal'; spheres and cylinders are solid; a"
+                " profile's tool lies on the left of its points)."
+            );
         }
     }
 }
