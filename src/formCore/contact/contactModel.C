@@ -194,6 +194,25 @@ contactModel::contactModel
             lengthSum += L;
             nSpacings += n - 1;
         }
+        // A node meets a tool once: a node on the patches of two pairs
+        // with the same tool (the edge between a billet's top and its
+        // side) belongs to the first pair only, or it would carry two
+        // multipliers for one constraint and make the matrix singular
+        for (const impl::pairData& q : m.pairs)
+        {
+            if (q.tool < 0 || q.tool != p.tool) continue;
+            for (int node : q.nodes) nodeSet.erase(node);
+        }
+        if (nodeSet.empty())
+        {
+            throw inputError
+            (
+                ps.name + "/patch",
+                "pair '" + ps.name + "': every node of patch '"
+              + ps.faceSet + "' already belongs to another pair with tool '"
+              + ps.tool + "'"
+            );
+        }
         p.nodes.assign(nodeSet.begin(), nodeSet.end());
         for (int node : p.nodes)
         {
