@@ -547,6 +547,8 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
 
     double energy1 = 0;
     double rPrevNorm = r0;
+    // residual norms of the step's iterates, for a non-monotone search
+    std::vector<double> recent{rhs.norm()};
     for (int i = 1; i <= newton_.maxIterations; ++i)
     {
         const vecX dU = solveLinear(rhs);
@@ -563,7 +565,20 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         {
             ok =
                 newton_.residualLineSearch
-              ? residualLineSearch(t1, dU, rhs.norm(), ok, r, beta)
+              ? residualLineSearch
+                (
+                    t1, dU,
+                    *std::max_element
+                    (
+                        recent.end()
+                      - std::min<std::ptrdiff_t>
+                        (
+                            recent.size(), newton_.lineSearchMemory + 1
+                        ),
+                        recent.end()
+                    ),
+                    ok, r, beta
+                )
               : lineSearch(t1, dU, rhs, ok, r, beta);
         }
         if (!ok)
@@ -594,6 +609,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         const double dUNorm = beta*dU.norm();
 
         report.residualNorms.push_back(rNorm);
+        recent.push_back(rNorm);
         report.updateNorms.push_back(dUNorm);
         report.energyNorms.push_back(energy);
         report.iterations = i;

@@ -41,7 +41,8 @@ void Foam::formScene::readSolution()
         {
             "analysis", "linearSolver", "minDeltaT", "maxDeltaT",
             "maxCutbacks", "maxIterations", "forceTolerance",
-            "energyTolerance", "lineSearch", "lineSearchType", "predictor",
+            "energyTolerance", "lineSearch", "lineSearchType",
+            "lineSearchMemory", "predictor",
             "growthFactor",
             "growthIterations", "summary", "integrator", "gamma", "mass",
             "initialVelocity"
@@ -133,6 +134,14 @@ void Foam::formScene::readSolution()
             << exit(FatalIOError);
     }
     lineSearchType_ = d.getOrDefault<word>("lineSearchType", "auto");
+    newton_.lineSearchMemory = d.getOrDefault<label>("lineSearchMemory", 0);
+    if (newton_.lineSearchMemory < 0 || newton_.lineSearchMemory > 20)
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'lineSearchMemory' in " << d.name() << " must be"
+            << " between 0 (monotone) and 20, got "
+            << newton_.lineSearchMemory << exit(FatalIOError);
+    }
     if (!wordList{"auto", "energy", "residual"}.found(lineSearchType_))
     {
         FatalIOErrorInFunction(d)
@@ -316,7 +325,13 @@ void Foam::formScene::printScene() const
                !newton_.lineSearch ? "off"
              : newton_.residualLineSearch ? "residual norm (backtracking)"
              : "energy"
-           ) << nl
+           )
+        << (
+               newton_.lineSearch && newton_.lineSearchMemory > 0
+             ? ", non-monotone over the last "
+             + std::to_string(newton_.lineSearchMemory + 1) + " iterates"
+             : std::string()
+           ).c_str() << nl
         << "    predictor: "
         << (
                newton_.quadratic ? "quadratic extrapolation"
