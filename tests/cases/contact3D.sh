@@ -26,7 +26,10 @@
 #    by less than 1 % of the drag (observed 1e-13).
 # 4. Bad input: a 2D profile for a 3D tool, an unknown surface type, a
 #    sphere without radius, a plane whose normal points into its tool (the
-#    whole patch on the tool's inner side), a deformable target in 3D.
+#    whole patch on the tool's inner side), a deformable target in 3D; a
+#    triSurface whose file is missing, has no triangles, or whose
+#    triangles' normals point into the tool.
+# 5. An STL sphere against the analytic one (below, after 1).
 . "$(dirname "$0")/testFunctions"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamContact3D.XXXXXX")
@@ -55,6 +58,34 @@ if runCopy hertz3D "$c" block; then
     checkClose "Hertz 3D: contact radius a" "$aFE" "$aRef" 0.03
 else
     fail "Hertz 3D run (see $c/log.formFoam)"
+fi
+
+# 5. The Hertz sphere as triangles (triSurface): the cap under the contact
+#    zone written as an STL file (hertz3D/writeSphereCap.py: points on the
+#    sphere, spacing h = 0.2 and 0.1) against the analytic sphere of 1:
+#    the force converges to it as the facets shrink (inscribed facets:
+#    below it), at second order in h (sagitta h^2/8R); observed -0.7 %
+#    and -0.17 %
+if [ -n "${Fq:-}" ]; then
+    declare -A stl
+    for h in 0.2 0.1; do
+        c=$work/stl$h
+        if runCopy hertz3D "$c" block \
+            "mkdir -p constant/triSurface && python3 writeSphereCap.py $h constant/triSurface/ball.stl" \
+            "sed -i 's|surface { type sphere; centre (0 0 50); radius 50; }|surface { type triSurface; file \"ball.stl\"; }|' constant/contactProperties"
+        then
+            stl[$h]=$(calc "$(summaryValue "$c" quarterForce)/$Fq - 1")
+        else
+            fail "Hertz 3D with an STL sphere, h = $h (see $c/log.formFoam)"
+        fi
+        rm -rf "$c"
+    done
+    echo "    STL sphere: force error h = 0.2: ${stl[0.2]:-}, h = 0.1: ${stl[0.1]:-}"
+    checkBetween "STL sphere h = 0.1: force within 0.5 % below the analytic sphere" "${stl[0.1]:-}" -0.005 0
+    checkBetween "STL sphere: the error falls at second order (ratio h = 0.2 / 0.1)" \
+        "$(calc "${stl[0.2]:-nan}/${stl[0.1]:-nan}")" 2.5 6
+else
+    fail "STL sphere: no analytic Hertz force to compare with"
 fi
 
 # 2. Sliding obliquely
@@ -101,7 +132,7 @@ bad()   # bad <label> <regex> <edit>
 }
 bad "3D tool given as a 2D profile" "Unknown entry 'profile'|unknown entry 'profile'" \
     "sed -i 's/ground { surface { type plane; point (0 0 0); normal (0 0 1); } }/ground { profile ((1 0) (-1 0)); }/' constant/contactProperties"
-bad "unknown surface type" "unknown surface type 'cone'; valid: cylinder extrudedProfile plane revolvedProfile sphere" \
+bad "unknown surface type" "unknown surface type 'cone'; valid: cylinder extrudedProfile plane revolvedProfile sphere triSurface" \
     "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type cone; point (0 0 0);/' constant/contactProperties"
 bad "sphere without radius" "missing entry 'radius'" \
     "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type sphere; centre (0 0 -5);/' constant/contactProperties"
@@ -109,4 +140,11 @@ bad "plane facing into its tool" "Tool 'ground' in .*contactProperties.* turns i
     "sed -i 's/normal (0 0 1);/normal (0 0 -1);/' constant/contactProperties"
 bad "deformable target in 3D" "deformable targets is implemented for 2D models only" \
     "sed -i 's/blockBottom { patch bottom; tool ground; friction 0.3; }/blockBottom { patch bottom; targetPatch top; }/' constant/contactProperties"
+bad "triSurface: missing file" "Entry 'file' in .*contactProperties.*: no file .*constant/triSurface/ground.stl" \
+    "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type triSurface; file \"ground.stl\";/' constant/contactProperties"
+bad "triSurface: a file without triangles" "ground.stl has no triangles" \
+    "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type triSurface; file \"ground.stl\";/' constant/contactProperties && mkdir -p constant/triSurface && printf 'solid ground\nendsolid ground\n' > constant/triSurface/ground.stl"
+# the ground as two triangles whose normals point down, into the ground
+bad "triSurface: normals into the tool" "Tool 'ground' in .*contactProperties.* turns its back on patch 'bottom' of pair 'blockBottom'" \
+    "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type triSurface; file \"ground.stl\";/' constant/contactProperties && mkdir -p constant/triSurface && printf 'solid ground\nfacet normal 0 0 -1\nouter loop\nvertex -9 -9 0\nvertex 9 9 0\nvertex 9 -9 0\nendloop\nendfacet\nfacet normal 0 0 -1\nouter loop\nvertex -9 -9 0\nvertex -9 9 0\nvertex 9 9 0\nendloop\nendfacet\nendsolid ground\n' > constant/triSurface/ground.stl"
 rm -rf "$work"

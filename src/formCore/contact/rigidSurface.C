@@ -3,10 +3,11 @@
 -------------------------------------------------------------------------------
 Description
     Implementation of rigidSurface.H: closest-point projections onto
-    planes, spheres, cylinders, extruded and revolved profiles, and the
-    tangent frame of a projection.
+    planes, spheres, cylinders, extruded and revolved profiles (triangles:
+    triangulatedSurface.C), and the tangent frame of a projection.
 \*---------------------------------------------------------------------------*/
 #include "rigidSurface.H"
+#include "triangulatedSurface.H"
 #include "formError.H"
 #include <cmath>
 
@@ -194,6 +195,7 @@ const bool registered = []()
     {
         return std::unique_ptr<rigidSurface>(new roundSurface(in, false));
     };
+    reg["triSurface"] = newTriangulatedSurface;
     reg["cylinder"] = [](const surfaceInput& in)
     {
         return std::unique_ptr<rigidSurface>(new roundSurface(in, true));
@@ -281,7 +283,8 @@ std::unique_ptr<rigidSurface> rigidSurface::New
     const std::string& type,
     std::map<std::string, vec3> vectors,
     std::map<std::string, double> scalars,
-    std::shared_ptr<rigidProfile> profile
+    std::shared_ptr<rigidProfile> profile,
+    std::shared_ptr<const triangulation> triangles
 )
 {
     (void)registered;
@@ -294,7 +297,11 @@ std::unique_ptr<rigidSurface> rigidSurface::New
             "unknown surface type '" + type + "'; valid: " + validTypes()
         );
     }
-    surfaceInput in{std::move(vectors), std::move(scalars), std::move(profile)};
+    surfaceInput in
+    {
+        std::move(vectors), std::move(scalars), std::move(profile),
+        std::move(triangles)
+    };
     return it->second(in);
 }
 

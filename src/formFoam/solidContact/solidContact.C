@@ -9,6 +9,7 @@ Description
 #include "formError.H"
 #include "OSspecific.H"
 #include "vector2D.H"
+#include "triSurface.H"
 #include <fstream>
 
 // * * * * * * * * * * * * * * * Private Functions  * * * * * * * * * * * * //
@@ -99,10 +100,50 @@ std::shared_ptr<form::rigidProfile> Foam::solidContact::readProfile
 }
 
 
+std::shared_ptr<const form::triangulation>
+Foam::solidContact::readTriangles(const dictionary& sd) const
+{
+    fileName name = sd.get<fileName>("file");
+    name.expand();
+    const fileName path = runTime_.path()/"constant"/"triSurface"/name;
+    if (!isFile(path))
+    {
+        FatalIOErrorInFunction(sd)
+            << "Entry 'file' in " << sd.name() << ": no file " << path
+            << " (the triangles of a triSurface tool are read from"
+            << " constant/triSurface/)" << exit(FatalIOError);
+    }
+    auto T = std::make_shared<form::triangulation>();
+    T->source = name;
+    try
+    {
+        const triSurface surf(path);
+        const pointField& pts = surf.points();
+        T->points.reserve(pts.size());
+        for (const point& p : pts)
+        {
+            T->points.emplace_back(p.x(), p.y(), p.z());
+        }
+        T->triangles.reserve(surf.size());
+        for (const labelledTri& f : surf)
+        {
+            T->triangles.push_back({f[0], f[1], f[2]});
+        }
+    }
+    catch (const Foam::error& e)
+    {
+        FatalIOErrorInFunction(sd)
+            << "Entry 'file' in " << sd.name() << ": cannot read " << path
+            << ": " << e.message() << exit(FatalIOError);
+    }
+    return T;
+}
+
+
 std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
 (
     const dictionary& sd
-)
+) const
 {
     const word type = sd.get<word>("type");
     const std::map<word, wordList> keys
@@ -111,7 +152,8 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
         {"sphere", {"centre", "radius"}},
         {"cylinder", {"point", "axis", "radius"}},
         {"extrudedProfile", {"origin", "xAxis", "yAxis", "profile", "radii", "radius"}},
-        {"revolvedProfile", {"origin", "axis", "profile", "radii", "radius"}}
+        {"revolvedProfile", {"origin", "axis", "profile", "radii", "radius"}},
+        {"triSurface", {"file", "flipNormals"}}
     };
     const auto it = keys.find(type);
     if (it == keys.end())
@@ -131,7 +173,12 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
         type == "extrudedProfile" || type == "revolvedProfile";
     for (const word& k : it->second)
     {
-        if (k == "profile" || k == "radii") continue;
+        if (k == "profile" || k == "radii" || k == "file") continue;
+        if (k == "flipNormals")
+        {
+            scalars[k] = sd.getOrDefault<bool>(k, false) ? 1 : 0;
+            continue;
+        }
         if (k == "radius")
         {
             // a sphere's or cylinder's radius; a profile's fillet radius
@@ -145,10 +192,15 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
         }
     }
     if (profiled) profile = readProfile(sd);
+    std::shared_ptr<const form::triangulation> triangles;
+    if (type == "triSurface") triangles = readTriangles(sd);
     std::shared_ptr<form::rigidSurface> surface;
     try
     {
-        surface = form::rigidSurface::New(type, vectors, scalars, profile);
+        surface = form::rigidSurface::New
+        (
+            type, vectors, scalars, profile, triangles
+        );
     }
     catch (const form::inputError& e)
     {
@@ -377,7 +429,9 @@ void Foam::solidContact::checkOrientation3D
                 ps,
                 "a surface's normal points out of the tool, towards the body"
                 " (a plane's 'normal'; spheres and cylinders are solid; a"
-                " profile's tool lies on the left of its points)."
+                " profile's tool lies on the left of its points; a"
+                " triSurface's triangles turn counter-clockwise seen from"
+                " the body: 'flipNormals true' turns them all)."
             );
         }
     }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <random>
 #include "../fdCheck.H"
+#include "surfaceTestTools.H"
 
 using namespace form;
 
@@ -27,18 +28,9 @@ void checkDerivatives
 )
 {
     const surfaceProjection P = s.project(y);
-    const double h = 1e-6;
     mat3 dN;
     vec3 dG;
-    for (int j = 0; j < 3; ++j)
-    {
-        vec3 yp = y, ym = y;
-        yp(j) += h;
-        ym(j) -= h;
-        const surfaceProjection a = s.project(yp), b = s.project(ym);
-        dN.col(j) = (a.normal - b.normal)/(2*h);
-        dG(j) = (a.gap - b.gap)/(2*h);
-    }
+    test::surfaceDifferences(s, y, 1e-6, dG, dN);
     EXPECT_NEAR(P.normal.norm(), 1, 1e-13) << what;
     EXPECT_TRUE(test::fdError("rigidSurface dg/dy = n", (dG - P.normal).norm()/(1 + y.norm()), 1e-9))
         << what << " y " << y.transpose();
