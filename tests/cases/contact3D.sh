@@ -30,6 +30,7 @@
 #    triSurface whose file is missing, has no triangles, or whose
 #    triangles' normals point into the tool.
 # 5. An STL sphere against the analytic one (below, after 1).
+# 6. A force-controlled plane pressing a block (below, after 5).
 . "$(dirname "$0")/testFunctions"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamContact3D.XXXXXX")
@@ -86,6 +87,34 @@ if [ -n "${Fq:-}" ]; then
         "$(calc "${stl[0.2]:-nan}/${stl[0.1]:-nan}")" 2.5 6
 else
     fail "STL sphere: no analytic Hertz force to compare with"
+fi
+
+# 6. A force-controlled plane pressing a linear elastic block (block3D,
+#    1 x 1 x 3, E = 1000, nu = 0.3, symmetry planes x = 0, y = 0, z = 0),
+#    starting 0.01 above it: the tool is moved onto the block before the
+#    first step, then pushes with F = 5 (a nodal force: the whole face).
+#    Frictionless: the uniaxial state, top at 3 - F L/E, side at
+#    1 + nu F/E (to 1e-7: the gaps of the nodes, resolved to the
+#    constraint's tolerance, differ by 1e-7); the tool stops on the top
+#    face (within 1e-6; observed 1.2e-7) and the bottom reaction balances
+#    F (1e-8).
+c=$work/forceControl
+if runCopy block3D "$c" block \
+    "sed -i 's/type        neoHookean;/type        linearElastic;/' constant/block/solidProperties" \
+    "sed -i '/^    bottom /,/translation/d' 0/block/D" \
+    "sed -i 's/^    xMin .*/    xMin { type fixedDisplacement; components (x); }\n    bottom { type fixedDisplacement; components (z); }/' 0/block/D" \
+    "sed -i 's/^    yMin .*/    yMin { type fixedDisplacement; components (y); }/' 0/block/D" \
+    "sed -i 's/^    topZMax .*/    pressZ { type toolPosition; tool press; component z; }\n    pressForce { type toolForce; tool press; component z; }/' system/solidSolution" \
+    "printf 'FoamFile { version 2.0; format ascii; class dictionary; object contactProperties; }\ntools { press { surface { type plane; point (0 0 3.01); normal (0 0 -1); } force table ((0 0) (1 5)); direction (0 0 -1); } }\npairs { top { patch top; tool press; friction 0; } }\n' > constant/contactProperties"
+then
+    z=$(summaryValue "$c" cornerZ)
+    checkClose "force-controlled plane: top at 3 - F L/E" "$z" 2.985 1e-7
+    checkClose "force-controlled plane: side at 1 + nu F/E" "$(summaryValue "$c" cornerX)" 1.0015 1e-7
+    checkClose "force-controlled plane: bottom reaction = F" "$(summaryValue "$c" bottomReactionZ)" 5 1e-8
+    gapTop=$(calc "3.01 + $(summaryValue "$c" pressZ) - $z")
+    checkBetween "force-controlled plane: the tool rests on the top face (gap $gapTop)" "$gapTop" -1e-6 1e-6
+else
+    fail "force-controlled plane run (see $c/log.formFoam)"
 fi
 
 # 2. Sliding obliquely
