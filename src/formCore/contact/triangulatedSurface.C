@@ -149,7 +149,11 @@ triangulatedSurface::triangulatedSurface
         for (int k = 0; k < 3; ++k)
         {
             const int a = f[k], b = f[(k + 1)%3], c = f[(k + 2)%3];
-            edgeSum[{std::min(a, b), std::max(a, b)}] += faceNormal_[t];
+            // (an Eigen vector is not zeroed by its default constructor)
+            edgeSum.try_emplace
+            (
+                {std::min(a, b), std::max(a, b)}, vec3::Zero()
+            ).first->second += faceNormal_[t];
             const vec3 u = (p_[b] - p_[a]).normalized();
             const vec3 v = (p_[c] - p_[a]).normalized();
             const double angle =
