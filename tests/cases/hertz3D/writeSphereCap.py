@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Write the cap of the sphere of tests/cases/hertz3D (centre (0 0 50),
 radius 50) under the block's contact zone as an ASCII STL file: a square
-grid of spacing h over [-2, 6] x [-2, 6] in x, y, every point lifted onto
-the sphere (z = 50 - sqrt(50^2 - x^2 - y^2)), every square cut into two
-triangles. The triangles' vertex order makes their normals point out of
+grid of spacing h over [-2, 6] x [-2, 6] in x, y (h divides 2: x = 0 and
+y = 0 are grid lines), every point lifted onto the sphere (z = 50 -
+sqrt(50^2 - x^2 - y^2)), every square cut into two triangles. The triangles' vertex order makes their normals point out of
 the ball (down, towards the block).
 
     writeSphereCap.py h out.stl
@@ -34,7 +34,14 @@ with open(out, 'w') as f:
     for i in range(n):
         for j in range(n):
             p00, p10, p01, p11 = pts[i][j], pts[i + 1][j], pts[i][j + 1], pts[i + 1][j + 1]
-            # clockwise seen from above: normals down, out of the ball
-            facet(f, p00, p11, p10)
-            facet(f, p00, p01, p11)
+            # clockwise seen from above: normals down, out of the ball;
+            # the diagonals alternate (a union-jack pattern), so that the
+            # facets are symmetric about the planes x = 0 and y = 0 of the
+            # quarter model
+            if (i + j) % 2 == 0:
+                facet(f, p00, p11, p10)
+                facet(f, p00, p01, p11)
+            else:
+                facet(f, p00, p01, p10)
+                facet(f, p10, p01, p11)
     f.write('endsolid ball\n')
