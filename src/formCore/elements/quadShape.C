@@ -6,6 +6,7 @@ Description
     square [-1, 1]^2 in VTK node order (VTK_QUAD, VTK_BIQUADRATIC_QUAD).
 \*---------------------------------------------------------------------------*/
 #include "quadShape.H"
+#include <cmath>
 #include <stdexcept>
 
 namespace form
@@ -101,6 +102,38 @@ vecX quadShapeValues(int nNodes, double r, double s)
     matX dN;
     quadShapeEval(nNodes, r, s, N, dN);
     return N;
+}
+
+
+matX quadShapeSecond(int nNodes, double r, double s)
+{
+    if (nNodes != 4 && nNodes != 9)
+    {
+        throw std::invalid_argument
+        (
+            "quadShapeSecond: " + std::to_string(nNodes) + "-node quad;"
+            " expected 4 or 9"
+        );
+    }
+    matX d2(nNodes, 3);
+    for (int a = 0; a < nNodes; ++a)
+    {
+        const double ra = rNode[a], sa = sNode[a];
+        if (nNodes == 4)
+        {
+            // (1 + ra r)(1 + sa s)/4: only the mixed derivative
+            d2.row(a) << 0, 0, 0.25*ra*sa;
+            continue;
+        }
+        double lr, dlr, ls, dls;
+        lagrange3(ra, r, lr, dlr);
+        lagrange3(sa, s, ls, dls);
+        // l'' of the quadratic through -1, 0, 1: 1 at the ends, -2 inside
+        const double d2r = std::abs(ra) > 0.5 ? 1 : -2;
+        const double d2s = std::abs(sa) > 0.5 ? 1 : -2;
+        d2.row(a) << d2r*ls, lr*d2s, dlr*dls;
+    }
+    return d2;
 }
 
 
