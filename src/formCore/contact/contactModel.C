@@ -134,15 +134,13 @@ contactModel::contactModel
         }
         if (ps.tool.empty() && m.nDim == 3)
         {
-            throw inputError
+            p.tool = -1;
+            p.surface = std::make_shared<deformableSurface>
             (
-                ps.name,
-                "pair '" + ps.name + "': contact with deformable targets"
-                " is implemented for 2D models only; in 3D a pair needs a"
-                " rigid tool"
+                mesh, faces(ps, ps.targetFaceSet, "targetPatch", "target")
             );
         }
-        if (ps.tool.empty())
+        else if (ps.tool.empty())
         {
             p.tool = -1;
             p.target = std::make_shared<deformableTarget>
@@ -541,6 +539,11 @@ void contactModel::evaluate
         if (p.target && p.active)
         {
             m.evaluateDeformable(p, dt, U, fext, r, K);
+            continue;
+        }
+        if (p.surface && p.active)
+        {
+            m.evaluateDeformable3D(p, dt, U, fext, r, K);
             continue;
         }
         const int T = p.tool;

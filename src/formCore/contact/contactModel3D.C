@@ -37,25 +37,6 @@ Description
 namespace form
 {
 
-namespace
-{
-
-// The coordinate axis least aligned with n
-vec3 leastAligned(const vec3& n)
-{
-    int i = 0;
-    for (int j = 1; j < 3; ++j)
-    {
-        if (std::abs(n(j)) < std::abs(n(i))) i = j;
-    }
-    vec3 e = vec3::Zero();
-    e(i) = 1;
-    return e;
-}
-
-} // anonymous namespace
-
-
 void contactModel::impl::initialise3D
 (
     pairData& p,
@@ -63,6 +44,11 @@ void contactModel::impl::initialise3D
     double t
 )
 {
+    if (p.surface)
+    {
+        initialiseDeformable3D(p, U);
+        return;
+    }
     const vec3 d = translation(p.tool, t);
     for (std::size_t a = 0; a < p.nodes.size(); ++a)
     {
@@ -77,15 +63,33 @@ void contactModel::impl::initialise3D
 
 void contactModel::impl::commit3D(pairData& p, const vecX& U)
 {
-    const vec3 d = translation(p.tool, tCommitted);
+    const vec3 d = p.surface ? vec3::Zero() : translation(p.tool, tCommitted);
     for (std::size_t a = 0; a < p.nodes.size(); ++a)
     {
-        const vec3 y = position3(p.nodes[a], U) - d;
-        const surfaceProjection P = tools[p.tool].surface->project(y);
-        const vec3 c = y - P.gap*P.normal;
-        p.slip3[a] = c - p.cCommitted[a];
-        p.cCommitted[a] = c;
-        p.lastSlip[a] = p.slip3[a].norm();
+        surfaceProjection P;
+        if (p.surface)
+        {
+            // Deformable target: the node's motion relative to the target
+            // point under it over the step
+            const faceProjection Pf = p.surface->project
+            (
+                position3(p.nodes[a], U), p.nodes[a], U, p.edge[a]
+            );
+            p.slip3[a] = Pf.onTarget
+              ? relativeMotion(p.nodes[a], Pf, U) : vec3::Zero();
+            p.lastSlip[a] = p.slip3[a].norm();
+            if (!Pf.onTarget) continue;
+            P.normal = Pf.normal;
+        }
+        else
+        {
+            const vec3 y = position3(p.nodes[a], U) - d;
+            P = tools[p.tool].surface->project(y);
+            const vec3 c = y - P.gap*P.normal;
+            p.slip3[a] = c - p.cCommitted[a];
+            p.cCommitted[a] = c;
+            p.lastSlip[a] = p.slip3[a].norm();
+        }
         if (std::abs(P.normal.dot(p.ref[a])) < std::cos(25*M_PI/180)) continue;
         // The normal turned towards the reference: a new frame, the same
         // tangential force
@@ -131,15 +135,7 @@ void contactModel::impl::evaluateRigid3D
     {
         const int node = p.nodes[a];
         const vec3 y = position3(node, U) - d;
-        if (!y.allFinite() || y.cwiseAbs().maxCoeff() > 1e30)
-        {
-            throw numericalError
-            (
-                "contact: node " + std::to_string(node) + " of pair '"
-              + pairSpecs[&p - pairs.data()].name
-              + "' has a non-finite or diverged position"
-            );
-        }
+        checkPosition(p, node, y);
         const surfaceProjection P = tool.surface->project(y);
         const vec3& n = P.normal;
         const int il = p.first + p.perNode*a;

@@ -59,7 +59,7 @@ std::vector<contactNodeResult> contactModel::pairResults
 
     std::vector<contactNodeResult> results;
     const Eigen::Vector2d d =
-        p.target ? Eigen::Vector2d::Zero() : m.translation2(p.tool, t);
+        p.tool < 0 ? Eigen::Vector2d::Zero() : m.translation2(p.tool, t);
     for (std::size_t a = 0; a < p.nodes.size(); ++a)
     {
         contactNodeResult res;
@@ -81,6 +81,18 @@ std::vector<contactNodeResult> contactModel::pairResults
         {
             const segmentProjection P =
                 p.target->project(res.x.head<2>(), res.node, U, p.edge[a]);
+            res.gap =
+                P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
+            res.slip = p.lastSlip[a];
+            res.slipRate = p.rate[a];
+            res.closed = P.onTarget && lambda > P.gap;
+            results.push_back(res);
+            continue;
+        }
+        if (p.surface)
+        {
+            const faceProjection P =
+                p.surface->project(res.x, res.node, U, p.edge[a]);
             res.gap =
                 P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
             res.slip = p.lastSlip[a];
@@ -167,9 +179,12 @@ std::string contactModel::describe() const
         const auto& ps = m.pairSpecs[i];
         s += "pair " + ps.name + ": patch " + ps.faceSet + " ("
           + std::to_string(p.nodes.size()) + " nodes) against "
-          + (p.target
+          + (p.target || p.surface
               ? "patch " + ps.targetFaceSet + " ("
-              + std::to_string(p.target->nEdges()) + " edges, deformable)"
+              + (p.target
+                  ? std::to_string(p.target->nEdges()) + " edges"
+                  : std::to_string(p.surface->nFaces()) + " faces")
+              + ", deformable)"
               : "tool " + ps.tool + (m.tools[p.tool].forceControlled
               ? " (force-controlled)" : " (motion)"))
           + ", friction " + formatNumber(p.mu) + "\n";

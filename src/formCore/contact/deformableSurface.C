@@ -7,6 +7,7 @@ Description
 \*---------------------------------------------------------------------------*/
 #include "deformableSurface.H"
 #include "quadShape.H"
+#include "rigidSurface.H"
 #include "formError.H"
 #include <algorithm>
 #include <cmath>
@@ -15,22 +16,6 @@ Description
 
 namespace form
 {
-
-namespace
-{
-
-//- [v]x: the matrix of the cross product v x .
-mat3 cross(const vec3& v)
-{
-    mat3 S;
-    S << 0, -v(2), v(1),
-         v(2), 0, -v(0),
-        -v(1), v(0), 0;
-    return S;
-}
-
-} // anonymous namespace
-
 
 deformableSurface::facePoint deformableSurface::at
 (
@@ -207,7 +192,7 @@ void deformableSurface::evaluateAt
     D1 += F.x11*P.dXi.row(0) + F.x12*P.dXi.row(1);
     D2 += F.x12*P.dXi.row(0) + F.x22*P.dXi.row(1);
     // da = dx_1 x x_2 + x_1 x dx_2 = -[x_2]x dx_1 + [x_1]x dx_2
-    const matX da = -cross(F.x2)*D1 + cross(F.x1)*D2;
+    const matX da = -skew(F.x2)*D1 + skew(F.x1)*D2;
     P.dNormal = (mat3::Identity() - n*n.transpose())*da/la;
 }
 

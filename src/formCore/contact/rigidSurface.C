@@ -17,14 +17,6 @@ namespace form
 namespace
 {
 
-mat3 skew(const vec3& a)
-{
-    mat3 W;
-    W << 0, -a(2), a(1), a(2), 0, -a(0), -a(1), a(0), 0;
-    return W;
-}
-
-
 class plane : public rigidSurface
 {
     vec3 p_, n_;
@@ -321,10 +313,7 @@ tangentFrame tangentFrame::of(const surfaceProjection& P, const vec3& ref)
     }
     F.t1 = w/L;
     F.t2 = n.cross(F.t1);
-    const mat3& dN = P.dNormalDY;
-    const mat3 dW = -n.dot(ref)*dN - n*(ref.transpose()*dN);
-    F.dT1DY = (mat3::Identity() - F.t1*F.t1.transpose())*dW/L;
-    F.dT2DY = -skew(F.t1)*dN + skew(n)*F.dT1DY;
+    derivatives(n, ref, F.t1, L, P.dNormalDY, F.dT1DY, F.dT2DY);
     return F;
 }
 

@@ -249,13 +249,13 @@ TEST(contact3D, inputErrors)
         contactModel(mesh, analysisType::solid3D, 2e5, {flat}, {{"top", "top", "flat", 0}}),
         inputError
     );
-    // a deformable target in 3D
+    // an unknown deformable target in 3D
     EXPECT_THROW
     (
         contactModel
         (
             mesh, analysisType::solid3D, 2e5, {makeTool(toolKind::sphere)},
-            {{"self", "top", "", 0, "top"}}
+            {{"self", "top", "", 0, "topp"}}
         ),
         inputError
     );
