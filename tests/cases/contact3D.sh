@@ -26,7 +26,7 @@
 #    by less than 1 % of the drag (observed 1e-13).
 # 4. Bad input: a 2D profile for a 3D tool, an unknown surface type, a
 #    sphere without radius, a plane whose normal points into its tool (the
-#    whole patch on the tool's inner side), a deformable target in 3D; a
+#    whole patch on the tool's inner side), an unknown target patch; a
 #    triSurface whose file is missing, has no triangles, or whose
 #    triangles' normals point into the tool.
 # 5. An STL sphere against the analytic one (below, after 1).
@@ -168,8 +168,8 @@ bad "sphere without radius" "missing entry 'radius'" \
     "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type sphere; centre (0 0 -5);/' constant/contactProperties"
 bad "plane facing into its tool" "Tool 'ground' in .*contactProperties.* turns its back on patch 'bottom' of pair 'blockBottom'" \
     "sed -i 's/normal (0 0 1);/normal (0 0 -1);/' constant/contactProperties"
-bad "deformable target in 3D" "deformable targets is implemented for 2D models only" \
-    "sed -i 's/blockBottom { patch bottom; tool ground; friction 0.3; }/blockBottom { patch bottom; targetPatch top; }/' constant/contactProperties"
+bad "unknown deformable target in 3D" "Unknown patch 'topp'.*entry 'targetPatch'" \
+    "sed -i 's/blockBottom { patch bottom; tool ground; friction 0.3; }/blockBottom { patch bottom; targetPatch topp; }/' constant/contactProperties"
 bad "triSurface: missing file" "Entry 'file' in .*contactProperties.*: no file .*constant/triSurface/ground.stl" \
     "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type triSurface; file \"ground.stl\";/' constant/contactProperties"
 bad "triSurface: a file without triangles" "ground.stl has no triangles" \
