@@ -566,8 +566,6 @@ void contactModel::evaluate
         }
         const rigidToolSpec& tool = m.tools[T];
         const Eigen::Vector2d d = m.translation2(T, t);
-        const int iz = m.toolUnknown[T];
-        const Eigen::Vector2d e = tool.direction.head<2>();
 
         for (int a = 0; a < nNodes; ++a)
         {
@@ -575,96 +573,32 @@ void contactModel::evaluate
             const Eigen::Vector2d y = m.position(node, U) - d;
             // A diverging iterate: report it (the step is cut back)
             // instead of projecting non-finite or absurd positions
-            if (!y.allFinite() || y.cwiseAbs().maxCoeff() > 1e30)
-            {
-                throw numericalError
-                (
-                    "contact: node " + std::to_string(node) + " of pair '"
-                  + m.pairSpecs[&p - m.pairs.data()].name
-                  + "' has a non-finite or diverged position"
-                );
-            }
+            m.checkPosition(p, node, vec3(y(0), y(1), 0));
             const profileProjection P = tool.profile->project(y);
-            const int il = p.first + p.perNode*a;
-            const int it = il + 1;
-            const double lambda = m.x(il);
-            const double tau = p.perNode == 2 ? m.x(it) : 0.0;
-            const Eigen::Vector2d& n = P.normal;
-            const Eigen::Vector2d& tv = P.tangent;
-
-            const normalConstraint c =
-                normalConstraintFunction(P.gap, lambda, m.epsN);
-            const Eigen::Vector2d f = k*(lambda*n + tau*tv);
-            m.dofs.add2(fext, node, f);
-            m.dofs.add2(m.friction, node, k*tau*tv);
-            m.toolForce[T].head<2>() += f;
-            r(il) = k*c.w;
-
-            m.updateStatus(p, a, lambda, P.gap, U, K != nullptr);
-
-            // Slip rate over the step (a velocity, so that the friction
-            // law does not depend on the step size; setSlipRateLaw)
-            frictionConstraint fc;
+            impl::nodeTarget q;
+            q.dofs = {m.dofs.dof(node, 0), m.dofs.dof(node, 1)};
+            q.weight = {1};
+            q.gap = P.gap;
+            q.dGap = P.normal;
+            q.n = P.normal;
+            q.dn = P.dNormalDY;
+            q.tool = T;
             if (p.perNode == 2)
             {
+                // Slip rate over the step (a velocity, so that the
+                // friction law does not depend on the step size;
+                // setSlipRateLaw)
+                q.t = P.tangent;
+                q.dt = {matX(R90*P.dNormalDY)};
                 p.rate[a] =
                     (
                         m.rateA*(P.xi - p.xiCommitted[a])
                       + m.rateB*p.lastSlip[a]
                     )/dt;
-                fc = m.frictionLaw(p.rate[a], tau, lambda, p.mu, dt);
-                r(it) = k*fc.v;
+                q.s = vecX::Constant(1, p.rate[a]);
+                q.ds = m.rateA/dt*P.dXidY.transpose();
             }
-            if (!K) continue;
-
-            // Derivatives with respect to the node position y (= d/du)
-            const Eigen::Matrix2d dN = P.dNormalDY;
-            const Eigen::Matrix2d dT = R90*dN;
-            const Eigen::Matrix2d Kuu = -k*(lambda*dN + tau*dT);
-            const Eigen::RowVector2d Klu = -k*c.dwdg*n.transpose();
-            Eigen::RowVector2d Ktu = Eigen::RowVector2d::Zero();
-            if (p.perNode == 2) Ktu = -k*fc.dvds*P.dXidY.transpose();
-
-            for (int i = 0; i < 2; ++i)
-            {
-                const int di = m.dofs.dof(node, i);
-                for (int j = 0; j < 2; ++j)
-                {
-                    add(di, m.dofs.dof(node, j), Kuu(i, j));
-                }
-                add(di, N + il, -k*n(i));
-                add(N + il, di, Klu(i));
-                if (p.perNode == 2)
-                {
-                    add(di, N + it, -k*tv(i));
-                    add(N + it, di, Ktu(i));
-                }
-            }
-            add(N + il, N + il, -k*c.dwdl);
-            if (p.perNode == 2)
-            {
-                add(N + it, N + it, -k*fc.dvdtau);
-                add(N + it, N + il, -k*fc.dvdl);
-            }
-
-            if (iz < 0) continue;
-            // Force-controlled tool: y = x - z e, so d/dz = -e . d/dy; and
-            // its equation r_z = F - e . sum f
-            const Eigen::Vector2d Kuz = -Kuu*e;
-            for (int i = 0; i < 2; ++i)
-            {
-                add(m.dofs.dof(node, i), N + iz, Kuz(i));
-                // K_z,u = e . df/dy = -e^T Kuu
-                add(N + iz, m.dofs.dof(node, i), -(e.transpose()*Kuu)(i));
-            }
-            add(N + il, N + iz, -Klu.dot(e));
-            add(N + iz, N + il, k*e.dot(n));
-            if (p.perNode == 2)
-            {
-                add(N + it, N + iz, -Ktu.dot(e));
-                add(N + iz, N + it, k*e.dot(tv));
-            }
-            add(N + iz, N + iz, e.dot(Kuu*e));
+            m.assembleNode(p, a, q, dt, U, fext, r, K);
         }
     }
 

@@ -8,26 +8,21 @@ Description
     tau = (tau_1, tau_2) in the node's tangent frame (t1, t2)
     (tangentFrame: built from a fixed reference direction, so that it
     turns only with the normal). With y = x - d(t) the node in the tool's
-    frame, the projection (g, n, dn/dy) and c = y - g n the closest point:
-        node:       f_ext += k (lambda n + tau_a t_a)
-        lambda:     r = k w(g, lambda)
-        tau:        r = k v(s, tau, lambda)     (alartCurnierFrictionVector)
+    frame, the projection (g, n, dn/dy) and c = y - g n the closest point,
+    the node's nodeTarget (contactModelAssembly.C: the equations and
+    their tangent) has q = y, the weight 1, dg/dy = n, and the slip rate
         s_a = t_a . (A (c - c_n) + B (c_n - c_n-1))/deltaT
     the motion of the closest point over the step in the tangent frame
     (the 3D form of the 2D arc-length rate; A, B: setSlipRateLaw), with
         dc/dy = I - n n^T - g dn/dy,
         ds_a/dy = (A t_a^T dc/dy + D^T dt_a/dy)/deltaT,
-        D = A (c - c_n) + B (c_n - c_n-1)
-    and the tangent blocks of the 2D code with 3-vectors:
-        K_uu = -k (lambda dn/dy + tau_a dt_a/dy),  K_u,lambda = -k n,
-        K_u,tau_a = -k t_a, K_lambda,u = -k w_g n^T,
-        K_tau,u = -k v_s ds/dy, K_tau,tau = -k v_tau, K_tau,lambda = -k v_lambda
-    and the force-controlled tool's column and row (y = x - z e).
+        D = A (c - c_n) + B (c_n - c_n-1).
     The reference direction of a node is the coordinate axis least
     aligned with its first normal; at a commit where the normal has
     turned within 25 deg of it, it is chosen again and the committed
     friction multipliers are re-expressed in the new frame (the tangential
-    force vector is unchanged).
+    force vector is unchanged). Deformable targets share the commit
+    (contactModelDeformable3D.C).
 \*---------------------------------------------------------------------------*/
 #include "contactModelImpl.H"
 #include "constraintFunctions.H"
@@ -119,17 +114,9 @@ void contactModel::impl::evaluateRigid3D
     std::vector<triplet>* K
 )
 {
-    const int N = nDofs;
-    const auto add = [K](int i, int j, double v)
-    {
-        K->emplace_back(i, j, v);
-    };
     const int T = p.tool;
     const rigidToolSpec& tool = tools[T];
     const vec3 d = translation(T, t);
-    const int iz = toolUnknown[T];
-    const vec3 e = tool.direction;
-    const bool withFriction = p.perNode == 3;
 
     for (int a = 0; a < int(p.nodes.size()); ++a)
     {
@@ -138,95 +125,34 @@ void contactModel::impl::evaluateRigid3D
         checkPosition(p, node, y);
         const surfaceProjection P = tool.surface->project(y);
         const vec3& n = P.normal;
-        const int il = p.first + p.perNode*a;
-        const double lambda = x(il);
-        const normalConstraint c = normalConstraintFunction(P.gap, lambda, epsN);
-
-        vec3 f = k*lambda*n;
-        tangentFrame F;
-        Eigen::Vector2d tau = Eigen::Vector2d::Zero();
-        frictionVector fc;
-        Eigen::Matrix<double, 2, 3> dsdy = Eigen::Matrix<double, 2, 3>::Zero();
-        if (withFriction)
+        nodeTarget q;
+        q.dofs = {dofs.dof(node, 0), dofs.dof(node, 1), dofs.dof(node, 2)};
+        q.weight = {1};
+        q.gap = P.gap;
+        q.dGap = n;
+        q.n = n;
+        q.dn = P.dNormalDY;
+        q.tool = T;
+        if (p.perNode == 3)
         {
-            F = tangentFrame::of(P, p.ref[a]);
-            tau << x(il + 1), x(il + 2);
-            const vec3 ft = k*(tau(0)*F.t1 + tau(1)*F.t2);
-            f += ft;
-            for (int i = 0; i < 3; ++i) friction(dofs.dof(node, i)) += ft(i);
+            const tangentFrame F = tangentFrame::of(P, p.ref[a]);
+            q.t.resize(3, 2);
+            q.t << F.t1, F.t2;
+            q.dt = {F.dT1DY, F.dT2DY};
             const vec3 cpt = y - P.gap*n;
             const vec3 D = rateA*(cpt - p.cCommitted[a]) + rateB*p.slip3[a];
-            const Eigen::Vector2d s(F.t1.dot(D)/dt, F.t2.dot(D)/dt);
-            p.rate[a] = s.norm();
-            fc = frictionLawVector(s, tau, lambda, p.mu, dt);
-            r(il + 1) = k*fc.v(0);
-            r(il + 2) = k*fc.v(1);
+            q.s = Eigen::Vector2d(F.t1.dot(D)/dt, F.t2.dot(D)/dt);
+            p.rate[a] = q.s.norm();
             if (K)
             {
                 const mat3 dc =
                     mat3::Identity() - n*n.transpose() - P.gap*P.dNormalDY;
-                dsdy.row(0) = (rateA*F.t1.transpose()*dc + D.transpose()*F.dT1DY)/dt;
-                dsdy.row(1) = (rateA*F.t2.transpose()*dc + D.transpose()*F.dT2DY)/dt;
+                q.ds.resize(2, 3);
+                q.ds.row(0) = (rateA*F.t1.transpose()*dc + D.transpose()*F.dT1DY)/dt;
+                q.ds.row(1) = (rateA*F.t2.transpose()*dc + D.transpose()*F.dT2DY)/dt;
             }
         }
-        for (int i = 0; i < 3; ++i) fext(dofs.dof(node, i)) += f(i);
-        toolForce[T] += f;
-        r(il) = k*c.w;
-
-        updateStatus(p, a, lambda, P.gap, U, K != nullptr);
-        if (!K) continue;
-
-        mat3 Kuu = -k*lambda*P.dNormalDY;
-        if (withFriction) Kuu -= k*(tau(0)*F.dT1DY + tau(1)*F.dT2DY);
-        const Eigen::RowVector3d Klu = -k*c.dwdg*n.transpose();
-        Eigen::Matrix<double, 2, 3> Ktu = Eigen::Matrix<double, 2, 3>::Zero();
-        if (withFriction) Ktu = -k*fc.dvds*dsdy;
-
-        for (int i = 0; i < 3; ++i)
-        {
-            const int di = dofs.dof(node, i);
-            for (int j = 0; j < 3; ++j) add(di, dofs.dof(node, j), Kuu(i, j));
-            add(di, N + il, -k*n(i));
-            add(N + il, di, Klu(i));
-            if (!withFriction) continue;
-            add(di, N + il + 1, -k*F.t1(i));
-            add(di, N + il + 2, -k*F.t2(i));
-            add(N + il + 1, di, Ktu(0, i));
-            add(N + il + 2, di, Ktu(1, i));
-        }
-        add(N + il, N + il, -k*c.dwdl);
-        if (withFriction)
-        {
-            for (int al = 0; al < 2; ++al)
-            {
-                for (int be = 0; be < 2; ++be)
-                {
-                    add(N + il + 1 + al, N + il + 1 + be, -k*fc.dvdtau(al, be));
-                }
-                add(N + il + 1 + al, N + il, -k*fc.dvdl(al));
-            }
-        }
-
-        if (iz < 0) continue;
-        // Force-controlled tool: y = x - z e
-        const vec3 Kuz = -Kuu*e;
-        const Eigen::RowVector3d Kzu = -e.transpose()*Kuu;
-        for (int i = 0; i < 3; ++i)
-        {
-            add(dofs.dof(node, i), N + iz, Kuz(i));
-            add(N + iz, dofs.dof(node, i), Kzu(i));
-        }
-        add(N + il, N + iz, -Klu.dot(e));
-        add(N + iz, N + il, k*e.dot(n));
-        if (withFriction)
-        {
-            const Eigen::Vector2d Ktz = -Ktu*e;
-            add(N + il + 1, N + iz, Ktz(0));
-            add(N + il + 2, N + iz, Ktz(1));
-            add(N + iz, N + il + 1, k*e.dot(F.t1));
-            add(N + iz, N + il + 2, k*e.dot(F.t2));
-        }
-        add(N + iz, N + iz, e.dot(Kuu*e));
+        assembleNode(p, a, q, dt, U, fext, r, K);
     }
 }
 

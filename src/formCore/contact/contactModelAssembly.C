@@ -1,0 +1,185 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    contactModel: the one assembly of the node-to-target equations, for
+    every target kind (2D profiles and element edges, 3D surfaces and
+    element faces) and both dimensions. Each kind projects its node and
+    supplies a nodeTarget (contactModelImpl.H): over q = (the node's dofs,
+    the target nodes' dofs), the gap g, the normal n, the tangent basis
+    t_a, the slip rate s_a, their derivatives, and the weights w_b of the
+    force on each node block (1 for the contactor node, -N_b for target
+    node b). Here, with the multipliers lambda, tau_a of the node:
+        f      = k (lambda n + tau_a t_a)        force on the node
+        F_b    = w_b f                           on each block (w_0 = 1)
+        r_lambda = k w(g, lambda)                normal constraint
+        r_tau  = k v(s, tau, lambda)             friction constraint
+    (constraintFunctions.H) and the Newton matrix K = -dR/dq:
+        df/dq  = k (lambda dn/dq + tau_a dt_a/dq)
+        dF_b/dq = w_b df/dq + f dw_b/dq
+        K_F,lambda = -w_b k n,   K_F,tau_a = -w_b k t_a,
+        K_lambda,q = -k w_g dg/dq,  K_lambda,lambda = -k w_lambda,
+        K_tau,q = -k v_s ds/dq,  K_tau,tau = -k v_tau,
+        K_tau,lambda = -k v_lambda.
+    A force-controlled rigid tool moves the node's projection with its
+    unknown position z along e (y = x - z e): d/dz = -e . d/dy on every
+    row, and its equation r_z = F - e . sum f adds the row e . df.
+\*---------------------------------------------------------------------------*/
+#include "contactModelImpl.H"
+#include "constraintFunctions.H"
+#include <cmath>
+
+namespace form
+{
+
+contactModel::impl::frictionResult contactModel::impl::frictionLaw
+(
+    const vecX& s,
+    const vecX& tau,
+    double lambda,
+    double mu,
+    double dt
+) const
+{
+    const double eT = epsT > 0 ? epsT : std::pow(1e-4*spacing, 2);
+    const double rho = controls.frictionAugmentation*dt/rateA;
+    const bool ac = controls.frictionLaw == "alartCurnier";
+    frictionResult R;
+    if (s.size() == 1)
+    {
+        const frictionConstraint c = ac
+          ? alartCurnierFrictionFunction(s(0), tau(0), lambda, mu, eT, rho)
+          : frictionConstraintFunction(s(0), tau(0), lambda, mu, eT);
+        R.v = vecX::Constant(1, c.v);
+        R.dvds = matX::Constant(1, 1, c.dvds);
+        R.dvdtau = matX::Constant(1, 1, c.dvdtau);
+        R.dvdl = vecX::Constant(1, c.dvdl);
+        return R;
+    }
+    const Eigen::Vector2d s2 = s, tau2 = tau;
+    frictionVector c;
+    if (ac)
+    {
+        c = alartCurnierFrictionVector(s2, tau2, lambda, mu, eT, rho);
+    }
+    else
+    {
+        // regularised: v = tau + mu lambda s/sqrt(|s|^2 + epsT)
+        const double q = std::sqrt(s2.squaredNorm() + eT);
+        c.v = tau2 + mu*lambda*s2/q;
+        c.dvds = mu*lambda
+           *(Eigen::Matrix2d::Identity()/q - s2*s2.transpose()/(q*q*q));
+        c.dvdl = mu*s2/q;
+    }
+    R.v = c.v;
+    R.dvds = c.dvds;
+    R.dvdtau = c.dvdtau;
+    R.dvdl = c.dvdl;
+    return R;
+}
+
+
+void contactModel::impl::assembleNode
+(
+    pairData& p,
+    int a,
+    const nodeTarget& q,
+    double dt,
+    const vecX& U,
+    vecX& fext,
+    vecX& r,
+    std::vector<triplet>* K
+)
+{
+    const int N = nDofs;
+    const int d = nDim;
+    const int nt = p.perNode - 1;
+    const int nq = int(q.dofs.size());
+    const int nb = nq/d;
+    const int il = p.first + p.perNode*a;
+    const double lambda = x(il);
+    const vecX tau = x.segment(il + 1, nt);
+    const normalConstraint c = normalConstraintFunction(q.gap, lambda, epsN);
+
+    vecX ft = vecX::Zero(d);
+    for (int al = 0; al < nt; ++al) ft += k*tau(al)*q.t.col(al);
+    const vecX f = k*lambda*q.n + ft;
+    for (int b = 0; b < nb; ++b)
+    {
+        for (int i = 0; i < d; ++i)
+        {
+            fext(q.dofs[d*b + i]) += q.weight[b]*f(i);
+            friction(q.dofs[d*b + i]) += q.weight[b]*ft(i);
+        }
+    }
+    if (q.tool >= 0) toolForce[q.tool].head(d) += f;
+    r(il) = k*c.w;
+    updateStatus(p, a, lambda, q.gap, U, K != nullptr);
+
+    frictionResult fc;
+    if (nt > 0)
+    {
+        fc = frictionLaw(q.s, tau, lambda, p.mu, dt);
+        r.segment(il + 1, nt) = k*fc.v;
+    }
+    if (!K) return;
+    const auto add = [K](int i, int j, double v)
+    {
+        K->emplace_back(i, j, v);
+    };
+
+    // dF/dq
+    matX df = k*lambda*q.dn;
+    for (int al = 0; al < nt; ++al) df += k*tau(al)*q.dt[al];
+    matX dF(nq, nq);
+    for (int b = 0; b < nb; ++b)
+    {
+        dF.middleRows(d*b, d) = q.weight[b]*df;
+        if (b > 0) dF.middleRows(d*b, d) += f*q.dWeight.row(b - 1);
+    }
+    const matX Ktq = nt > 0 ? matX(-k*fc.dvds*q.ds) : matX();
+    for (int i = 0; i < nq; ++i)
+    {
+        const int di = q.dofs[i];
+        const double w = q.weight[i/d];
+        for (int j = 0; j < nq; ++j) add(di, q.dofs[j], -dF(i, j));
+        add(di, N + il, -w*k*q.n(i % d));
+        add(N + il, di, -k*c.dwdg*q.dGap(i));
+        for (int al = 0; al < nt; ++al)
+        {
+            add(di, N + il + 1 + al, -w*k*q.t(i % d, al));
+            add(N + il + 1 + al, di, Ktq(al, i));
+        }
+    }
+    add(N + il, N + il, -k*c.dwdl);
+    for (int al = 0; al < nt; ++al)
+    {
+        for (int be = 0; be < nt; ++be)
+        {
+            add(N + il + 1 + al, N + il + 1 + be, -k*fc.dvdtau(al, be));
+        }
+        add(N + il + 1 + al, N + il, -k*fc.dvdl(al));
+    }
+
+    const int iz = q.tool >= 0 ? toolUnknown[q.tool] : -1;
+    if (iz < 0) return;
+    // Force-controlled tool: d/dz = -e . d/dy over the node's block (a
+    // rigid tool's q is the node alone)
+    const vecX e = tools[q.tool].direction.head(d);
+    const vecX dfe = df*e;
+    for (int i = 0; i < d; ++i)
+    {
+        add(q.dofs[i], N + iz, dfe(i));
+        add(N + iz, q.dofs[i], e.dot(df.col(i)));
+    }
+    add(N + il, N + iz, k*c.dwdg*q.dGap.dot(e));
+    add(N + iz, N + il, k*e.dot(q.n));
+    for (int al = 0; al < nt; ++al)
+    {
+        add(N + il + 1 + al, N + iz, -Ktq.row(al).dot(e));
+        add(N + iz, N + il + 1 + al, k*e.dot(q.t.col(al)));
+    }
+    add(N + iz, N + iz, -e.dot(dfe));
+}
+
+} // namespace form
