@@ -26,7 +26,6 @@ void contactModel::impl::evaluateDeformable
     std::vector<triplet>* K
 )
 {
-    const int N = nDofs;
     const vecX& Un = Ucommitted.size() == U.size() ? Ucommitted : U;
 
     for (int a = 0; a < int(p.nodes.size()); ++a)
@@ -34,20 +33,12 @@ void contactModel::impl::evaluateDeformable
         const int node = p.nodes[a];
         const Eigen::Vector2d y = position(node, U);
         checkPosition(p, node, vec3(y(0), y(1), 0));
-        const int il = p.first + p.perNode*a;
         const segmentProjection P =
             p.target->project(y, node, U, p.edge[a]);
         if (K) p.edge[a] = P.onTarget ? P.edge : -1;
         if (!P.onTarget)
         {
-            // Beyond the target: out of contact, multipliers to zero
-            updateStatus(p, a, x(il), std::numeric_limits<double>::max(),
-                U, K != nullptr);
-            for (int j = 0; j < p.perNode; ++j)
-            {
-                r(il + j) = -k*x(il + j);
-                if (K) K->emplace_back(N + il + j, N + il + j, k);
-            }
+            offTarget(p, a, U, r, K);
             continue;
         }
 

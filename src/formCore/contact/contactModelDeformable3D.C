@@ -63,7 +63,6 @@ void contactModel::impl::evaluateDeformable3D
     std::vector<triplet>* K
 )
 {
-    const int N = nDofs;
     const vecX& Un = Ucommitted.size() == U.size() ? Ucommitted : U;
 
     for (int a = 0; a < int(p.nodes.size()); ++a)
@@ -71,19 +70,11 @@ void contactModel::impl::evaluateDeformable3D
         const int node = p.nodes[a];
         const vec3 y = position3(node, U);
         checkPosition(p, node, y);
-        const int il = p.first + p.perNode*a;
         const faceProjection P = p.surface->project(y, node, U, p.edge[a]);
         if (K) p.edge[a] = P.onTarget ? P.face : -1;
         if (!P.onTarget)
         {
-            // Beyond the target: out of contact, multipliers to zero
-            updateStatus(p, a, x(il), std::numeric_limits<double>::max(), U,
-                K != nullptr);
-            for (int j = 0; j < p.perNode; ++j)
-            {
-                r(il + j) = -k*x(il + j);
-                if (K) K->emplace_back(N + il + j, N + il + j, k);
-            }
+            offTarget(p, a, U, r, K);
             continue;
         }
 

@@ -77,27 +77,32 @@ std::vector<contactNodeResult> contactModel::pairResults
         res.weight = weight[res.node];
         res.pressure = res.weight > 0 ? res.normalForce/res.weight : 0;
         res.shear = res.weight > 0 ? res.tangentialForce/res.weight : 0;
-        if (p.target)
+        if (p.target || p.surface)
         {
-            const segmentProjection P =
-                p.target->project(res.x.head<2>(), res.node, U, p.edge[a]);
-            res.gap =
-                P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
+            // Deformable target: the gap of the node's projection
+            // (infinite beyond the target)
+            bool on = false;
+            double gap = 0;
+            if (p.target)
+            {
+                const segmentProjection P = p.target->project
+                (
+                    res.x.head<2>(), res.node, U, p.edge[a]
+                );
+                on = P.onTarget;
+                gap = P.gap;
+            }
+            else
+            {
+                const faceProjection P =
+                    p.surface->project(res.x, res.node, U, p.edge[a]);
+                on = P.onTarget;
+                gap = P.gap;
+            }
+            res.gap = on ? gap : std::numeric_limits<double>::infinity();
             res.slip = p.lastSlip[a];
             res.slipRate = p.rate[a];
-            res.closed = P.onTarget && lambda > P.gap;
-            results.push_back(res);
-            continue;
-        }
-        if (p.surface)
-        {
-            const faceProjection P =
-                p.surface->project(res.x, res.node, U, p.edge[a]);
-            res.gap =
-                P.onTarget ? P.gap : std::numeric_limits<double>::infinity();
-            res.slip = p.lastSlip[a];
-            res.slipRate = p.rate[a];
-            res.closed = P.onTarget && lambda > P.gap;
+            res.closed = on && lambda > gap;
             results.push_back(res);
             continue;
         }

@@ -6,6 +6,7 @@
 // friction) against central differences.
 #include "contactModel.H"
 #include "contactTestTools.H"
+#include "hexBoxMesh.H"
 #include "deformableTarget.H"
 #include "structuredQuadMesh.H"
 #include "quadShape.H"
@@ -27,40 +28,6 @@ using namespace form;
 namespace
 {
 
-//- Append mesh b to mesh a: nodes renumbered, b's block and face sets
-//  renamed with the prefix
-void append(feMesh& a, const feMesh& b, const std::string& prefix)
-{
-    const int offset = a.nNodes();
-    matX X(offset + b.nNodes(), 2);
-    X << a.X, b.X;
-    a.X = X;
-    const int blockOffset = int(a.blocks.size());
-    for (elementBlock blk : b.blocks)
-    {
-        blk.name = prefix + blk.name;
-        for (int& n : blk.connectivity) n += offset;
-        a.blocks.push_back(blk);
-    }
-    for (const auto& fs : b.faceSets)
-    {
-        std::vector<feFace> faces = fs.second;
-        for (feFace& f : faces)
-        {
-            f.block += blockOffset;
-            for (int& n : f.nodes) n += offset;
-        }
-        a.faceSets[prefix + fs.first] = faces;
-    }
-    for (const auto& ns : b.nodeSets)
-    {
-        std::vector<int> nodes = ns.second;
-        for (int& n : nodes) n += offset;
-        a.nodeSets[prefix + ns.first] = nodes;
-    }
-}
-
-
 //- A 2 x 1 Q9 block [0, 2] x [0, 1] and, on it, a 3 x 1 Q9 punch
 //  [x0, x0 + 1.4] x [1, 1.5]; pair "punch" (its bottom against the
 //  block's top)
@@ -74,7 +41,7 @@ struct twoBodies
         (
             {{{0, 0}, {2, 0}, {2, 1}, {0, 1}}}, 2, 1, 9, "Q9P3", "steel"
         );
-        append
+        test::appendMesh
         (
             mesh,
             structuredQuadMesh
