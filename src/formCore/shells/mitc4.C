@@ -1,0 +1,319 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    The MITC4 shell element (mitc4.H).
+\*---------------------------------------------------------------------------*/
+#include "mitc4.H"
+#include "quadShape.H"
+#include "gaussLegendre.H"
+#include "formError.H"
+#include <cmath>
+#include <vector>
+
+namespace form
+{
+
+mitc4::mitc4
+(
+    const Eigen::Matrix<double, 4, 3>& X,
+    const Eigen::Matrix<double, 4, 3>& V0,
+    const Eigen::Vector4d& a,
+    const shellElastic& material,
+    int nThickness
+)
+:
+    X_(X),
+    V0_(V0),
+    a_(a),
+    mat_(material),
+    nThickness_(nThickness)
+{
+    if (!(a.minCoeff() > 0))
+    {
+        throw numericalError("mitc4: thicknesses must be positive");
+    }
+    if (nThickness < 1 || nThickness > 5)
+    {
+        throw numericalError("mitc4: 1 to 5 points through the thickness");
+    }
+}
+
+
+mitc4::basis mitc4::at
+(
+    double r,
+    double s,
+    double t,
+    const std::array<shellNodeState, 4>& nodes
+) const
+{
+    quadShape<4>::vecN N;
+    quadShape<4>::matN2 dN;
+    quadShape<4>::eval(r, s, N, dN);
+    basis b;
+    for (int i = 0; i < 3; ++i)
+    {
+        b.G[i].setZero();
+        b.g[i].setZero();
+        b.D[i].setZero();
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+        const vec3 X0 = X_.row(k).transpose();
+        const vec3 V0 = V0_.row(k).transpose();
+        const vec3& x = nodes[k].x;
+        const vec3& V = nodes[k].director.V;
+        const double h = 0.5*t*a_(k);
+        // coefficient of node k's director in g_r, g_s, g_t
+        b.c[0][k] = dN(k, 0)*h;
+        b.c[1][k] = dN(k, 1)*h;
+        b.c[2][k] = 0.5*a_(k)*N(k);
+        for (int i = 0; i < 2; ++i)
+        {
+            b.G[i] += dN(k, i)*X0 + b.c[i][k]*V0;
+            b.g[i] += dN(k, i)*x + b.c[i][k]*V;
+            b.D[i].block<3, 3>(0, 5*k) = dN(k, i)*mat3::Identity();
+        }
+        b.G[2] += b.c[2][k]*V0;
+        b.g[2] += b.c[2][k]*V;
+        for (int i = 0; i < 3; ++i)
+        {
+            b.D[i].block<3, 2>(0, 5*k + 3) = b.c[i][k]*nodes[k].director.dV;
+        }
+    }
+    return b;
+}
+
+
+void mitc4::addSecond
+(
+    const basis& b,
+    int i,
+    int j,
+    double w,
+    const std::array<shellNodeState, 4>& nodes,
+    matQ& K
+)
+{
+    const matQ DD = b.D[i].transpose()*b.D[j];
+    K += w*(DD + DD.transpose());
+    for (int k = 0; k < 4; ++k)
+    {
+        const std::array<vec3, 3>& d2V = nodes[k].director.d2V;
+        const vec3 v = b.c[j][k]*b.g[i] + b.c[i][k]*b.g[j];
+        const double aa = v.dot(d2V[0]), ab = v.dot(d2V[1]), bb = v.dot(d2V[2]);
+        const int o = 5*k + 3;
+        K(o, o) += w*aa;
+        K(o, o + 1) += w*ab;
+        K(o + 1, o) += w*ab;
+        K(o + 1, o + 1) += w*bb;
+    }
+}
+
+
+namespace
+{
+
+//- The value and first derivative of g_i . g_j - G_i . G_j at a basis
+template<class Basis, class Row>
+double product(const Basis& b, int i, int j, Row&& dP)
+{
+    dP = b.g[i].transpose()*b.D[j] + b.g[j].transpose()*b.D[i];
+    return b.g[i].dot(b.g[j]) - b.G[i].dot(b.G[j]);
+}
+
+//- The tying points: A (0, 1), B (0, -1) for e_rt; C (1, 0), D (-1, 0)
+//  for e_st
+constexpr double tie[4][2] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
+
+} // anonymous namespace
+
+
+void mitc4::localFrame
+(
+    double r,
+    double s,
+    double t,
+    Eigen::Matrix<double, 5, 5>& T,
+    double& detJ
+) const
+{
+    quadShape<4>::vecN N;
+    quadShape<4>::matN2 dN;
+    quadShape<4>::eval(r, s, N, dN);
+    mat3 J = mat3::Zero();      // columns G_r, G_s, G_t
+    for (int k = 0; k < 4; ++k)
+    {
+        const vec3 X0 = X_.row(k).transpose();
+        const vec3 V0 = V0_.row(k).transpose();
+        const double h = 0.5*t*a_(k);
+        J.col(0) += dN(k, 0)*(X0 + h*V0);
+        J.col(1) += dN(k, 1)*(X0 + h*V0);
+        J.col(2) += 0.5*a_(k)*N(k)*V0;
+    }
+    detJ = J.determinant();
+    if (!(detJ > 0))
+    {
+        throw numericalError
+        (
+            "mitc4: the element's initial geometry is degenerate or"
+            " inverted (det J = " + std::to_string(detJ) + ")"
+        );
+    }
+    const mat3 Ginv = J.inverse();      // rows: contravariant G^i
+    const vec3 e3 = J.col(0).cross(J.col(1)).normalized();
+    const vec3 e1 = J.col(0).normalized();
+    const vec3 e2 = e3.cross(e1);
+    mat3 m;                             // m(i, a) = G^i . e_a
+    for (int i = 0; i < 3; ++i)
+    {
+        const vec3 Gi = Ginv.row(i).transpose();
+        m(i, 0) = Gi.dot(e1);
+        m(i, 1) = Gi.dot(e2);
+        m(i, 2) = Gi.dot(e3);
+    }
+    // Local (11, 22, 12, 13, 23) from covariant (rr, ss, rs, rt, st);
+    // engineering shears on both sides
+    const int la[5][2] = {{0, 0}, {1, 1}, {0, 1}, {0, 2}, {1, 2}};
+    const int cv[5][2] = {{0, 0}, {1, 1}, {0, 1}, {0, 2}, {1, 2}};
+    for (int p = 0; p < 5; ++p)
+    {
+        const int a = la[p][0], b = la[p][1];
+        const double fa = a == b ? 1 : 2;
+        for (int q = 0; q < 5; ++q)
+        {
+            const int i = cv[q][0], j = cv[q][1];
+            T(p, q) = i == j
+              ? fa*m(i, a)*m(i, b)
+              : fa*0.5*(m(i, a)*m(j, b) + m(j, a)*m(i, b));
+        }
+    }
+}
+
+
+Eigen::Matrix<double, 5, 5> mitc4::materialMatrix() const
+{
+    const double E = mat_.E, nu = mat_.nu;
+    const double c = E/(1 - nu*nu);
+    const double G = E/(2*(1 + nu));
+    Eigen::Matrix<double, 5, 5> D = Eigen::Matrix<double, 5, 5>::Zero();
+    D(0, 0) = D(1, 1) = c;
+    D(0, 1) = D(1, 0) = c*nu;
+    D(2, 2) = G;
+    D(3, 3) = D(4, 4) = mat_.kappa*G;
+    return D;
+}
+
+
+void mitc4::strains
+(
+    double r,
+    double s,
+    double t,
+    const std::array<shellNodeState, 4>& nodes,
+    Eigen::Matrix<double, 5, 1>& E,
+    Eigen::Matrix<double, 5, nDofs>* B
+) const
+{
+    Eigen::Matrix<double, 1, nDofs> dP;
+    const basis b = at(r, s, t, nodes);
+    E(0) = 0.5*product(b, 0, 0, dP);
+    if (B) B->row(0) = 0.5*dP;
+    E(1) = 0.5*product(b, 1, 1, dP);
+    if (B) B->row(1) = 0.5*dP;
+    E(2) = product(b, 0, 1, dP);
+    if (B) B->row(2) = dP;
+    // Tied transverse shears
+    E(3) = E(4) = 0;
+    if (B) B->bottomRows<2>().setZero();
+    for (int p = 0; p < 4; ++p)
+    {
+        const basis bt = at(tie[p][0], tie[p][1], t, nodes);
+        const bool rt = p < 2;
+        const double w = rt
+          ? 0.5*(1 + tie[p][1]*s)
+          : 0.5*(1 + tie[p][0]*r);
+        const double v = product(bt, rt ? 0 : 1, 2, dP);
+        E(rt ? 3 : 4) += w*v;
+        if (B) B->row(rt ? 3 : 4) += w*dP;
+    }
+}
+
+
+void mitc4::compute
+(
+    const std::array<shellNodeState, 4>& nodes,
+    vecQ& f,
+    matQ* K
+) const
+{
+    f.setZero();
+    if (K) K->setZero();
+    std::vector<double> zt, wt;
+    gaussLegendre1D(nThickness_, zt, wt);
+    const Eigen::Matrix<double, 5, 5> Dm = materialMatrix();
+    const double g = 1/std::sqrt(3.0);
+    const double pts[2] = {-g, g};
+    Eigen::Matrix<double, 5, 1> E;
+    Eigen::Matrix<double, 5, nDofs> B;
+    Eigen::Matrix<double, 5, 5> T;
+    for (double r : pts)
+    for (double s : pts)
+    for (int it = 0; it < nThickness_; ++it)
+    {
+        const double t = zt[it];
+        double detJ;
+        localFrame(r, s, t, T, detJ);
+        const double w = detJ*wt[it];       // 2 x 2 Gauss weights are 1
+        strains(r, s, t, nodes, E, &B);
+        const Eigen::Matrix<double, 5, 1> eps = T*E;
+        const Eigen::Matrix<double, 5, nDofs> Bl = T*B;
+        const Eigen::Matrix<double, 5, 1> S = Dm*eps;
+        f += w*Bl.transpose()*S;
+        if (!K) continue;
+        *K += w*Bl.transpose()*Dm*Bl;
+        // Geometric part: the covariant stress resultants T^T S times the
+        // second derivatives of the covariant strains
+        const Eigen::Matrix<double, 5, 1> m = w*T.transpose()*S;
+        const basis b = at(r, s, t, nodes);
+        addSecond(b, 0, 0, 0.5*m(0), nodes, *K);
+        addSecond(b, 1, 1, 0.5*m(1), nodes, *K);
+        addSecond(b, 0, 1, m(2), nodes, *K);
+        for (int p = 0; p < 4; ++p)
+        {
+            const basis bt = at(tie[p][0], tie[p][1], t, nodes);
+            const bool rt = p < 2;
+            const double wp = rt
+              ? 0.5*(1 + tie[p][1]*s)
+              : 0.5*(1 + tie[p][0]*r);
+            addSecond(bt, rt ? 0 : 1, 2, wp*m(rt ? 3 : 4), nodes, *K);
+        }
+    }
+}
+
+
+double mitc4::energy(const std::array<shellNodeState, 4>& nodes) const
+{
+    std::vector<double> zt, wt;
+    gaussLegendre1D(nThickness_, zt, wt);
+    const Eigen::Matrix<double, 5, 5> Dm = materialMatrix();
+    const double g = 1/std::sqrt(3.0);
+    const double pts[2] = {-g, g};
+    Eigen::Matrix<double, 5, 1> E;
+    Eigen::Matrix<double, 5, 5> T;
+    double W = 0;
+    for (double r : pts)
+    for (double s : pts)
+    for (int it = 0; it < nThickness_; ++it)
+    {
+        double detJ;
+        localFrame(r, s, zt[it], T, detJ);
+        strains(r, s, zt[it], nodes, E, nullptr);
+        const Eigen::Matrix<double, 5, 1> eps = T*E;
+        W += 0.5*detJ*wt[it]*eps.dot(Dm*eps);
+    }
+    return W;
+}
+
+} // namespace form
