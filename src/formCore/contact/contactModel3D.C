@@ -10,11 +10,12 @@ Description
     turns only with the normal). With y = x - d(t) the node in the tool's
     frame, the projection (g, n, dn/dy) and c = y - g n the closest point,
     the node's nodeTarget (contactModelAssembly.C: the equations and
-    their tangent) has q = y, the weight 1, dg/dy = n, and the slip rate
+    their tangent) has q = y, the weight 1, dg/dy (= n, except on a
+    triangulated surface with smoothed normals), and the slip rate
         s_a = t_a . (A (c - c_n) + B (c_n - c_n-1))/deltaT
     the motion of the closest point over the step in the tangent frame
     (the 3D form of the 2D arc-length rate; A, B: setSlipRateLaw), with
-        dc/dy = I - n n^T - g dn/dy,
+        dc/dy = I - n (dg/dy)^T - g dn/dy,
         ds_a/dy = (A t_a^T dc/dy + D^T dt_a/dy)/deltaT,
         D = A (c - c_n) + B (c_n - c_n-1).
     The reference direction of a node is the coordinate axis least
@@ -129,7 +130,7 @@ void contactModel::impl::evaluateRigid3D
         q.dofs = {dofs.dof(node, 0), dofs.dof(node, 1), dofs.dof(node, 2)};
         q.weight = {1};
         q.gap = P.gap;
-        q.dGap = n;
+        q.dGap = P.dGapDY();
         q.n = n;
         q.dn = P.dNormalDY;
         q.tool = T;
@@ -145,8 +146,8 @@ void contactModel::impl::evaluateRigid3D
             p.rate[a] = q.s.norm();
             if (K)
             {
-                const mat3 dc =
-                    mat3::Identity() - n*n.transpose() - P.gap*P.dNormalDY;
+                const mat3 dc = mat3::Identity()
+                  - n*P.dGapDY().transpose() - P.gap*P.dNormalDY;
                 q.ds.resize(2, 3);
                 q.ds.row(0) = (rateA*F.t1.transpose()*dc + D.transpose()*F.dT1DY)/dt;
                 q.ds.row(1) = (rateA*F.t2.transpose()*dc + D.transpose()*F.dT2DY)/dt;

@@ -11,6 +11,7 @@ Description
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <functional>
 #include <map>
 
 namespace form
@@ -84,12 +85,23 @@ double boxDistance2(const vec3& y, const vec3& lo, const vec3& hi)
 triangulatedSurface::triangulatedSurface
 (
     const triangulation& T,
-    bool flipNormals
+    bool flipNormals,
+    double featureAngle
 )
 :
     p_(T.points),
-    tri_(T.triangles)
+    tri_(T.triangles),
+    featureAngle_(featureAngle)
 {
+    if (!(featureAngle >= 0 && featureAngle <= 180))
+    {
+        throw inputError
+        (
+            "featureAngle",
+            "featureAngle must lie in [0, 180] degrees, got "
+          + std::to_string(featureAngle)
+        );
+    }
     const std::string src = T.source.empty() ? "the surface" : T.source;
     if (tri_.empty())
     {
@@ -171,6 +183,8 @@ triangulatedSurface::triangulatedSurface
             edgeNormal_[t][k] = edgeSum[{std::min(a, b), std::max(a, b)}];
         }
     }
+
+    smoothNormals();
 
     order_.resize(tri_.size());
     for (std::size_t t = 0; t < tri_.size(); ++t) order_[t] = int(t);
@@ -282,6 +296,131 @@ void triangulatedSurface::closest
 }
 
 
+void triangulatedSurface::smoothNormals()
+{
+    const int nT = int(tri_.size());
+    cornerNormal_.assign(nT, {vec3::Zero(), vec3::Zero(), vec3::Zero()});
+    smoothEdge_.assign(nT, {false, false, false});
+    smoothVertex_.assign(p_.size(), false);
+    if (featureAngle_ <= 0) return;
+    const double cosFeature = std::cos(featureAngle_*M_PI/180);
+
+    // The triangles of each edge
+    std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edges;
+    for (int t = 0; t < nT; ++t)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            const int a = tri_[t][k], b = tri_[t][(k + 1)%3];
+            edges[{std::min(a, b), std::max(a, b)}].push_back({t, k});
+        }
+    }
+    // Corners 3 t + j joined across smooth edges (union-find)
+    std::vector<int> parent(3*nT);
+    for (int i = 0; i < 3*nT; ++i) parent[i] = i;
+    const std::function<int(int)> root = [&](int i)
+    {
+        while (parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    std::vector<bool> boundaryVertex(p_.size(), false);
+    for (const auto& e : edges)
+    {
+        const auto& tk = e.second;
+        if (tk.size() != 2)
+        {
+            boundaryVertex[e.first.first] = boundaryVertex[e.first.second] = true;
+            continue;
+        }
+        const int t0 = tk[0].first, k0 = tk[0].second;
+        const int t1 = tk[1].first, k1 = tk[1].second;
+        if (faceNormal_[t0].dot(faceNormal_[t1]) < cosFeature) continue;
+        smoothEdge_[t0][k0] = smoothEdge_[t1][k1] = true;
+        // the edge's ends: corners k, k + 1 of t0 are corners k1 + 1, k1
+        // of t1 (the edge runs the other way in a consistently oriented
+        // neighbour); match them by vertex to be safe
+        for (int j0 : {k0, (k0 + 1)%3})
+        {
+            for (int j1 : {k1, (k1 + 1)%3})
+            {
+                if (tri_[t0][j0] != tri_[t1][j1]) continue;
+                parent[root(3*t0 + j0)] = root(3*t1 + j1);
+            }
+        }
+    }
+    // A fan's normal: the angle-weighted mean of its triangles' normals
+    std::map<int, vec3> fan;
+    for (int t = 0; t < nT; ++t)
+    {
+        for (int j = 0; j < 3; ++j)
+        {
+            const int a = tri_[t][j];
+            const vec3 u = (p_[tri_[t][(j + 1)%3]] - p_[a]).normalized();
+            const vec3 v = (p_[tri_[t][(j + 2)%3]] - p_[a]).normalized();
+            const double angle = std::atan2(u.cross(v).norm(), u.dot(v));
+            fan.try_emplace(root(3*t + j), vec3::Zero()).first->second +=
+                angle*faceNormal_[t];
+        }
+    }
+    std::vector<int> fansAt(p_.size(), -1);
+    std::vector<bool> manyFans(p_.size(), false);
+    for (int t = 0; t < nT; ++t)
+    {
+        for (int j = 0; j < 3; ++j)
+        {
+            const int r = root(3*t + j);
+            cornerNormal_[t][j] = fan[r].normalized();
+            const int a = tri_[t][j];
+            if (fansAt[a] >= 0 && fansAt[a] != r) manyFans[a] = true;
+            fansAt[a] = r;
+        }
+    }
+    for (std::size_t a = 0; a < p_.size(); ++a)
+    {
+        smoothVertex_[a] = fansAt[a] >= 0 && !manyFans[a] && !boundaryVertex[a];
+    }
+}
+
+
+surfaceProjection triangulatedSurface::smoothProjection
+(
+    int t,
+    const vec3& y,
+    const vec3& c,
+    const mat3& dcdy
+) const
+{
+    const std::array<int, 3>& f = tri_[t];
+    const vec3& nf = faceNormal_[t];
+    const double twiceArea =
+        (p_[f[1]] - p_[f[0]]).cross(p_[f[2]] - p_[f[0]]).norm();
+    vec3 m = vec3::Zero();
+    mat3 dm = mat3::Zero();         // dm/dc
+    for (int j = 0; j < 3; ++j)
+    {
+        // lambda_j = ((p_j+2 - p_j+1) x (c - p_j+1)) . N_f/(2 A), grad
+        // lambda_j = N_f x (p_j+2 - p_j+1)/(2 A)
+        const vec3& p1 = p_[f[(j + 1)%3]];
+        const vec3& p2 = p_[f[(j + 2)%3]];
+        const double lambda = (p2 - p1).cross(c - p1).dot(nf)/twiceArea;
+        const vec3 grad = nf.cross(p2 - p1)/twiceArea;
+        m += lambda*cornerNormal_[t][j];
+        dm += cornerNormal_[t][j]*grad.transpose();
+    }
+    surfaceProjection P;
+    const double lm = m.norm();
+    P.normal = m/lm;
+    const vec3 d = y - c;
+    P.gap = d.dot(P.normal);
+    P.dNormalDY =
+        (mat3::Identity() - P.normal*P.normal.transpose())*dm*dcdy/lm;
+    P.hasGapGradient = true;
+    P.gapGradient = (mat3::Identity() - dcdy).transpose()*P.normal
+      + P.dNormalDY.transpose()*d;
+    return P;
+}
+
+
 surfaceProjection triangulatedSurface::project(const vec3& y) const
 {
     int t = -1, local = -1;
@@ -290,6 +429,29 @@ surfaceProjection triangulatedSurface::project(const vec3& y) const
     closest(y, t, kind, local, c);
     surfaceProjection P;
     const vec3 d = y - c;
+    if (featureAngle_ > 0)
+    {
+        if (kind == face)
+        {
+            const vec3& nf = faceNormal_[t];
+            return smoothProjection
+            (
+                t, y, c, mat3::Identity() - nf*nf.transpose()
+            );
+        }
+        if (kind == edge && smoothEdge_[t][local])
+        {
+            const vec3 e =
+                (p_[tri_[t][(local + 1)%3]] - p_[tri_[t][local]]).normalized();
+            return smoothProjection(t, y, c, e*e.transpose());
+        }
+        if (kind == vertex && smoothVertex_[tri_[t][local]])
+        {
+            P.normal = cornerNormal_[t][local];
+            P.gap = d.dot(P.normal);
+            return P;
+        }
+    }
     if (kind == face)
     {
         P.normal = faceNormal_[t];
@@ -329,9 +491,13 @@ std::unique_ptr<rigidSurface> newTriangulatedSurface(const surfaceInput& in)
     }
     const auto it = in.scalars.find("flipNormals");
     const bool flip = it != in.scalars.end() && it->second != 0;
+    const auto fa = in.scalars.find("featureAngle");
     return std::unique_ptr<rigidSurface>
     (
-        new triangulatedSurface(*in.triangles, flip)
+        new triangulatedSurface
+        (
+            *in.triangles, flip, fa == in.scalars.end() ? 30.0 : fa->second
+        )
     );
 }
 

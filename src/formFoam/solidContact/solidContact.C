@@ -153,7 +153,7 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
         {"cylinder", {"point", "axis", "radius"}},
         {"extrudedProfile", {"origin", "xAxis", "yAxis", "profile", "radii", "radius"}},
         {"revolvedProfile", {"origin", "axis", "profile", "radii", "radius"}},
-        {"triSurface", {"file", "flipNormals"}}
+        {"triSurface", {"file", "flipNormals", "featureAngle"}}
     };
     const auto it = keys.find(type);
     if (it == keys.end())
@@ -177,6 +177,11 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
         if (k == "flipNormals")
         {
             scalars[k] = sd.getOrDefault<bool>(k, false) ? 1 : 0;
+            continue;
+        }
+        if (k == "featureAngle")
+        {
+            if (sd.found(k)) scalars[k] = sd.get<scalar>(k);
             continue;
         }
         if (k == "radius")
