@@ -241,15 +241,17 @@ void mitc4::strains
 }
 
 
-void mitc4::compute
+void mitc4::integrate
 (
     const std::array<shellNodeState, 4>& nodes,
-    vecQ& f,
-    matQ* K
+    vecQ* f,
+    matQ* K,
+    double* W
 ) const
 {
-    f.setZero();
+    if (f) f->setZero();
     if (K) K->setZero();
+    if (W) *W = 0;
     std::vector<double> zt, wt;
     gaussLegendre1D(nThickness_, zt, wt);
     const Eigen::Matrix<double, 5, 5> Dm = materialMatrix();
@@ -266,11 +268,13 @@ void mitc4::compute
         double detJ;
         localFrame(r, s, t, T, detJ);
         const double w = detJ*wt[it];       // 2 x 2 Gauss weights are 1
-        strains(r, s, t, nodes, E, &B);
+        strains(r, s, t, nodes, E, f || K ? &B : nullptr);
         const Eigen::Matrix<double, 5, 1> eps = T*E;
-        const Eigen::Matrix<double, 5, nDofs> Bl = T*B;
         const Eigen::Matrix<double, 5, 1> S = Dm*eps;
-        f += w*Bl.transpose()*S;
+        if (W) *W += 0.5*w*eps.dot(S);
+        if (!f && !K) continue;
+        const Eigen::Matrix<double, 5, nDofs> Bl = T*B;
+        if (f) *f += w*Bl.transpose()*S;
         if (!K) continue;
         *K += w*Bl.transpose()*Dm*Bl;
         // Geometric part: the covariant stress resultants T^T S times the
@@ -293,26 +297,21 @@ void mitc4::compute
 }
 
 
+void mitc4::compute
+(
+    const std::array<shellNodeState, 4>& nodes,
+    vecQ& f,
+    matQ* K
+) const
+{
+    integrate(nodes, &f, K, nullptr);
+}
+
+
 double mitc4::energy(const std::array<shellNodeState, 4>& nodes) const
 {
-    std::vector<double> zt, wt;
-    gaussLegendre1D(nThickness_, zt, wt);
-    const Eigen::Matrix<double, 5, 5> Dm = materialMatrix();
-    const double g = 1/std::sqrt(3.0);
-    const double pts[2] = {-g, g};
-    Eigen::Matrix<double, 5, 1> E;
-    Eigen::Matrix<double, 5, 5> T;
     double W = 0;
-    for (double r : pts)
-    for (double s : pts)
-    for (int it = 0; it < nThickness_; ++it)
-    {
-        double detJ;
-        localFrame(r, s, zt[it], T, detJ);
-        strains(r, s, zt[it], nodes, E, nullptr);
-        const Eigen::Matrix<double, 5, 1> eps = T*E;
-        W += 0.5*detJ*wt[it]*eps.dot(Dm*eps);
-    }
+    integrate(nodes, nullptr, nullptr, &W);
     return W;
 }
 

@@ -108,8 +108,8 @@ void shellDirector::commit(double alpha, double beta)
     if (q == 0) return;
     double c, s, dc, ds, d2c, d2s;
     coefficients(q, c, s, dc, ds, d2c, d2s);
-    // (1 - c)/q = -c'(0 ... q) averaged: 1/2 - q/24 + ..., from c' = -s/2
-    // and the identity 1 - c = 2 sin^2(phi/2): (1 - c)/q = s(q/4)^2/2
+    // (1 - c)/q without cancellation: 1 - cos(phi) = 2 sin^2(phi/2), so
+    // (1 - c)/q = s(q/4)^2/2
     double ch, sh, dch, dsh, d2ch, d2sh;
     coefficients(0.25*q, ch, sh, dch, dsh, d2ch, d2sh);
     const double k = 0.5*sh*sh;
