@@ -85,29 +85,11 @@ void checkTangent
     const twoBlocks s(nodes);
     contactModel cm = s.model(friction, law);
     const int N = 3*s.mesh.nNodes();
-    const int nC = cm.nUnknowns();
 
     std::mt19937 gen(17);
     std::uniform_real_distribution<double> u(-1, 1);
     // Committed state: both bodies displaced a little (slip reference)
-    vecX Un = vecX::Zero(N);
-    for (int q = 0; q < N; ++q) Un(q) = 0.003*u(gen);
-    if (bathe)
-    {
-        // A committed first stage to t = 0.25 that slid both bodies
-        vecX Um = Un;
-        for (int q = 0; q < N; ++q) Un(q) = 0.003*u(gen);
-        cm.beginIncrement(0, 0.25, Um);
-        vecX fext = vecX::Zero(N), r;
-        cm.evaluate(0.25, Un, fext, r, nullptr);
-        cm.commit(Un);
-        cm.setSlipRateLaw(1.5, -0.5);
-    }
-    else
-    {
-        cm.beginIncrement(0, 0.5, Un);
-        cm.commit(Un);
-    }
+    const vecX Un = test::commitRandomState(cm, N, gen, bathe);
     // Current state: the punch pushed down and sideways onto the block
     // (some nodes penetrating, some open), the block's top curved
     vecX U = Un;
@@ -128,16 +110,7 @@ void checkTangent
             U(3*a + 1) += 0.002*u(gen);
         }
     }
-    vecX x(nC);
-    // Normal multipliers alternately pressed and nearly zero, so that
-    // closed and open nodes occur; friction multipliers random
-    const int perNode = friction > 0 ? 3 : 1;
-    for (int a = 0; a < nC/perNode; ++a)
-    {
-        x(perNode*a) = a % 2 ? 1e-5 : 3e-3;
-        for (int j = 1; j < perNode; ++j) x(perNode*a + j) = 1e-3*u(gen);
-    }
-    cm.addToUnknowns(x - cm.unknowns());
+    test::setTestMultipliers(cm, friction > 0 ? 3 : 1, gen);
 
     vecX R0;
     matX K;

@@ -151,30 +151,11 @@ void checkTangent(double friction, bool bathe = false)
     const twoBodies s(0.9);
     contactModel cm = s.model(friction, 1e-6, 1e-6);
     const int N = s.mesh.nNodes()*2;
-    const int nC = cm.nUnknowns();
 
     std::mt19937 gen(17);
     std::uniform_real_distribution<double> u(-1, 1);
     // Committed state: both bodies displaced a little (slip reference)
-    vecX Un = vecX::Zero(N);
-    for (int q = 0; q < N; ++q) Un(q) = 0.003*u(gen);
-    if (bathe)
-    {
-        // A committed first stage to t = 0.25 that slid both bodies
-        // (the second stage's slip-rate law uses its slip)
-        vecX Um = Un;
-        for (int q = 0; q < N; ++q) Un(q) = 0.003*u(gen);
-        cm.beginIncrement(0, 0.25, Um);
-        vecX fext = vecX::Zero(N), r;
-        cm.evaluate(0.25, Un, fext, r, nullptr);
-        cm.commit(Un);
-        cm.setSlipRateLaw(1.5, -0.5);
-    }
-    else
-    {
-        cm.beginIncrement(0, 0.5, Un);
-        cm.commit(Un);
-    }
+    const vecX Un = test::commitRandomState(cm, N, gen, bathe);
     // Current state: the punch pushed down and sideways onto the block
     // (some nodes penetrating, some open), the block's top curved
     vecX U = Un;
@@ -192,16 +173,7 @@ void checkTangent(double friction, bool bathe = false)
                         + 0.002*u(gen);
         }
     }
-    vecX x(nC);
-    // Normal multipliers alternately pressed and nearly zero, so that
-    // closed and open nodes occur; friction multipliers random
-    const int perNode = friction > 0 ? 2 : 1;
-    for (int a = 0; a < nC/perNode; ++a)
-    {
-        x(perNode*a) = a % 2 ? 1e-5 : 3e-3;
-        if (perNode == 2) x(perNode*a + 1) = 1e-3*u(gen);
-    }
-    cm.addToUnknowns(x - cm.unknowns());
+    test::setTestMultipliers(cm, friction > 0 ? 2 : 1, gen);
 
     vecX R0;
     matX K;
