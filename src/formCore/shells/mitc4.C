@@ -19,16 +19,20 @@ mitc4::mitc4
     const Eigen::Matrix<double, 4, 3>& X,
     const Eigen::Matrix<double, 4, 3>& V0,
     const Eigen::Vector4d& a,
-    const shellElastic& material,
+    std::shared_ptr<const shellLaw> law,
     int nThickness
 )
 :
     X_(X),
     V0_(V0),
     a_(a),
-    mat_(material),
+    law_(std::move(law)),
     nThickness_(nThickness)
 {
+    if (!law_)
+    {
+        throw numericalError("mitc4: no lamina law");
+    }
     if (!(a.minCoeff() > 0))
     {
         throw numericalError("mitc4: thicknesses must be positive");
@@ -38,6 +42,19 @@ mitc4::mitc4
         throw numericalError("mitc4: 1 to 5 points through the thickness");
     }
 }
+
+
+mitc4::mitc4
+(
+    const Eigen::Matrix<double, 4, 3>& X,
+    const Eigen::Matrix<double, 4, 3>& V0,
+    const Eigen::Vector4d& a,
+    const shellElastic& law,
+    int nThickness
+)
+:
+    mitc4(X, V0, a, std::make_shared<shellElastic>(law), nThickness)
+{}
 
 
 mitc4::basis mitc4::at
@@ -136,6 +153,7 @@ void mitc4::localFrame
     double s,
     double t,
     Eigen::Matrix<double, 5, 5>& T,
+    mat3& Q,
     double& detJ
 ) const
 {
@@ -165,6 +183,9 @@ void mitc4::localFrame
     const vec3 e3 = J.col(0).cross(J.col(1)).normalized();
     const vec3 e1 = J.col(0).normalized();
     const vec3 e2 = e3.cross(e1);
+    Q.col(0) = e1;
+    Q.col(1) = e2;
+    Q.col(2) = e3;
     mat3 m;                             // m(i, a) = G^i . e_a
     for (int i = 0; i < 3; ++i)
     {
@@ -189,20 +210,6 @@ void mitc4::localFrame
               : fa*0.5*(m(i, a)*m(j, b) + m(j, a)*m(i, b));
         }
     }
-}
-
-
-Eigen::Matrix<double, 5, 5> mitc4::materialMatrix() const
-{
-    const double E = mat_.E, nu = mat_.nu;
-    const double c = E/(1 - nu*nu);
-    const double G = E/(2*(1 + nu));
-    Eigen::Matrix<double, 5, 5> D = Eigen::Matrix<double, 5, 5>::Zero();
-    D(0, 0) = D(1, 1) = c;
-    D(0, 1) = D(1, 0) = c*nu;
-    D(2, 2) = G;
-    D(3, 3) = D(4, 4) = mat_.kappa*G;
-    return D;
 }
 
 
@@ -241,9 +248,11 @@ void mitc4::strains
 }
 
 
-void mitc4::integrate
+bool mitc4::integrate
 (
     const std::array<shellNodeState, 4>& nodes,
+    const std::vector<materialState>* committed,
+    std::vector<materialState>* trial,
     vecQ* f,
     matQ* K,
     double* W
@@ -254,32 +263,48 @@ void mitc4::integrate
     if (W) *W = 0;
     std::vector<double> zt, wt;
     gaussLegendre1D(nThickness_, zt, wt);
-    const Eigen::Matrix<double, 5, 5> Dm = materialMatrix();
     const double g = 1/std::sqrt(3.0);
     const double pts[2] = {-g, g};
-    Eigen::Matrix<double, 5, 1> E;
+    const materialState none;
+    materialState scratch;
+    vec5 E, S;
+    mat5 T, D;
+    mat3 Q;
     Eigen::Matrix<double, 5, nDofs> B;
-    Eigen::Matrix<double, 5, 5> T;
+    int q = 0;
     for (double r : pts)
     for (double s : pts)
-    for (int it = 0; it < nThickness_; ++it)
+    for (int it = 0; it < nThickness_; ++it, ++q)
     {
         const double t = zt[it];
         double detJ;
-        localFrame(r, s, t, T, detJ);
+        localFrame(r, s, t, T, Q, detJ);
         const double w = detJ*wt[it];       // 2 x 2 Gauss weights are 1
         strains(r, s, t, nodes, E, f || K ? &B : nullptr);
-        const Eigen::Matrix<double, 5, 1> eps = T*E;
-        const Eigen::Matrix<double, 5, 1> S = Dm*eps;
-        if (W) *W += 0.5*w*eps.dot(S);
-        if (!f && !K) continue;
+        const vec5 eps = T*E;
+        if (W)
+        {
+            *W += w*law_->energy(eps);
+            if (!f && !K) continue;
+        }
+        if
+        (
+            !law_->stress
+            (
+                Q, eps, committed ? (*committed)[q] : none,
+                trial ? (*trial)[q] : scratch, S, D
+            )
+        )
+        {
+            return false;
+        }
         const Eigen::Matrix<double, 5, nDofs> Bl = T*B;
         if (f) *f += w*Bl.transpose()*S;
         if (!K) continue;
-        *K += w*Bl.transpose()*Dm*Bl;
+        *K += w*Bl.transpose()*D*Bl;
         // Geometric part: the covariant stress resultants T^T S times the
         // second derivatives of the covariant strains
-        const Eigen::Matrix<double, 5, 1> m = w*T.transpose()*S;
+        const vec5 m = w*T.transpose()*S;
         const basis b = at(r, s, t, nodes);
         addSecond(b, 0, 0, 0.5*m(0), nodes, *K);
         addSecond(b, 1, 1, 0.5*m(1), nodes, *K);
@@ -294,6 +319,32 @@ void mitc4::integrate
             addSecond(bt, rt ? 0 : 1, 2, wp*m(rt ? 3 : 4), nodes, *K);
         }
     }
+    return true;
+}
+
+
+bool mitc4::compute
+(
+    const std::array<shellNodeState, 4>& nodes,
+    const std::vector<materialState>& committed,
+    std::vector<materialState>& trial,
+    vecQ& f,
+    matQ* K
+) const
+{
+    if
+    (
+        int(committed.size()) != nQuadrature()
+     || int(trial.size()) != nQuadrature()
+    )
+    {
+        throw numericalError
+        (
+            "mitc4: " + std::to_string(committed.size()) + " states for "
+          + std::to_string(nQuadrature()) + " integration points"
+        );
+    }
+    return integrate(nodes, &committed, &trial, &f, K, nullptr);
 }
 
 
@@ -304,14 +355,24 @@ void mitc4::compute
     matQ* K
 ) const
 {
-    integrate(nodes, &f, K, nullptr);
+    if (law_->initialState().history.size())
+    {
+        throw numericalError
+        (
+            "mitc4::compute: a law with history needs the states"
+        );
+    }
+    if (!integrate(nodes, nullptr, nullptr, &f, K, nullptr))
+    {
+        throw numericalError("mitc4::compute: the lamina law failed");
+    }
 }
 
 
 double mitc4::energy(const std::array<shellNodeState, 4>& nodes) const
 {
     double W = 0;
-    integrate(nodes, nullptr, nullptr, &W);
+    integrate(nodes, nullptr, nullptr, nullptr, nullptr, &W);
     return W;
 }
 
