@@ -17,6 +17,7 @@
 #include "elastoPlastic.H"
 #include "logStrain.H"
 #include "kernelTestTools.H"
+#include "materialTestTools.H"
 #include <gtest/gtest.h>
 #include <cmath>
 #include "../fdCheck.H"
@@ -29,77 +30,10 @@ constexpr double fdTolElastoPlastic = 2e-6;
 }
 
 using namespace form;
+using namespace form::test;
 
 namespace
 {
-
-materialInput dictOf(const std::string& path) { materialInput d; d.path = path; return d; }
-
-//- elastoPlastic input: E, nu, hardening, optional yield / kinematic
-materialInput input
-(
-    double E, double nu,
-    const materialInput& hardening,
-    const materialInput* yield = nullptr,
-    const materialInput* kinematic = nullptr
-)
-{
-    materialInput in;
-    in.words["type"] = "elastoPlastic";
-    in.scalars["E"] = E;
-    in.scalars["nu"] = nu;
-    in.dicts["hardening"] = hardening;
-    in.dicts["hardening"].path = "hardening";
-    if (yield) { in.dicts["yield"] = *yield; in.dicts["yield"].path = "yield"; }
-    if (kinematic)
-    {
-        in.dicts["kinematicHardening"] = *kinematic;
-        in.dicts["kinematicHardening"].path = "kinematicHardening";
-    }
-    return in;
-}
-
-materialInput swift(double K, double eps0, double n)
-{
-    materialInput h = dictOf("hardening");
-    h.words["type"] = "swift";
-    h.scalars = {{"K", K}, {"eps0", eps0}, {"n", n}};
-    return h;
-}
-
-materialInput voce(double s0, double sInf, double b, double H)
-{
-    materialInput h = dictOf("hardening");
-    h.words["type"] = "voce";
-    h.scalars = {{"sigmaY0", s0}, {"sigmaInf", sInf}, {"b", b}, {"H", H}};
-    return h;
-}
-
-materialInput perfect(double s0)
-{
-    materialInput h = dictOf("hardening");
-    h.words["type"] = "perfect";
-    h.scalars = {{"sigmaY0", s0}};
-    return h;
-}
-
-materialInput hill(double r0, double r45, double r90)
-{
-    materialInput y = dictOf("yield");
-    y.words = {{"type", "hill48"}, {"rollingDirection", "x"},
-               {"normalDirection", "z"}};
-    y.scalars = {{"r0", r0}, {"r45", r45}, {"r90", r90}};
-    return y;
-}
-
-materialInput kinematic(const std::string& type, double C, double gamma)
-{
-    materialInput k = dictOf("kinematicHardening");
-    k.words["type"] = type;
-    k.scalars["C"] = C;
-    if (type == "armstrongFrederick") k.scalars["gamma"] = gamma;
-    return k;
-}
 
 //- Full Kirchhoff stress of the model at F (deviatoric + kappa ln J)
 mat3 tauFull(const material& m, const mat3& F, const materialState& s0,

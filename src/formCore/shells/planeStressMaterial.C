@@ -1,0 +1,220 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    A 3D material as a plane-stress shell law (planeStressMaterial.H).
+\*---------------------------------------------------------------------------*/
+#include "planeStressMaterial.H"
+#include <cmath>
+
+namespace form
+{
+
+namespace
+{
+
+//- Symmetric tensor of an engineering Voigt strain vector
+mat3 fromVoigtStrain(const vec6& e)
+{
+    mat3 E;
+    for (int a = 0; a < 6; ++a)
+    {
+        const double f = a < 3 ? 1 : 0.5;
+        E(voigtI[a], voigtJ[a]) = f*e(a);
+        E(voigtJ[a], voigtI[a]) = f*e(a);
+    }
+    return E;
+}
+
+//- 6 x 6 matrix of X -> A X A^T on stress-like Voigt vectors
+mat6 stressMap(const mat3& A)
+{
+    mat6 M;
+    for (int b = 0; b < 6; ++b)
+    {
+        mat3 X = mat3::Zero();
+        X(voigtI[b], voigtJ[b]) = X(voigtJ[b], voigtI[b]) = 1;
+        const mat3 Y = A*X*A.transpose();
+        for (int a = 0; a < 6; ++a) M(a, b) = Y(voigtI[a], voigtJ[a]);
+    }
+    return M;
+}
+
+//- 6 x 6 matrix of X -> A X A^T on engineering strain Voigt vectors
+mat6 strainMap(const mat3& A)
+{
+    mat6 M;
+    for (int b = 0; b < 6; ++b)
+    {
+        const mat3 Y = A*fromVoigtStrain(vec6::Unit(b))*A.transpose();
+        for (int a = 0; a < 6; ++a)
+        {
+            M(a, b) = (a < 3 ? 1 : 2)*Y(voigtI[a], voigtJ[a]);
+        }
+    }
+    return M;
+}
+
+//- Local Voigt index (11 22 33 12 23 13) of the shell strains
+//  (11 22 12 13 23)
+constexpr int shellIndex[5] = {0, 1, 3, 5, 4};
+
+} // anonymous namespace
+
+
+planeStressMaterial::planeStressMaterial
+(
+    std::shared_ptr<const material> mat,
+    double kappa
+)
+:
+    mat_(std::move(mat)),
+    kappa_(kappa),
+    nHistory_(mat_ ? mat_->nHistory() : 0)
+{
+    if (!mat_)
+    {
+        throw numericalError("planeStressMaterial: no material");
+    }
+    if (!(kappa > 0 && kappa <= 1))
+    {
+        throw inputError
+        (
+            "shearCorrection",
+            "the transverse shear correction factor must lie in (0, 1], not "
+          + formatNumber(kappa)
+        );
+    }
+}
+
+
+materialState planeStressMaterial::initialState() const
+{
+    materialState s;
+    s.history = vecX::Zero(nHistory_ + 1);
+    s.history.head(nHistory_) = mat_->initialState().history;
+    return s;
+}
+
+
+materialState planeStressMaterial::materialPart(const materialState& s) const
+{
+    materialState m;
+    m.history = s.history.head(nHistory_);
+    return m;
+}
+
+
+bool planeStressMaterial::response
+(
+    const mat3& Q,
+    const vec6& E,
+    const materialState& committed,
+    materialState& trial,
+    vec6& S,
+    mat6& C
+) const
+{
+    const double kappa = mat_->bulkModulus();
+    const vec6 m = (vec6() << 1, 1, 1, 0, 0, 0).finished();
+    const mat3 El = fromVoigtStrain(E);
+    mat3 F, A;
+    double p;
+    const bool linear = mat_->geometricallyLinear();
+    if (linear)
+    {
+        F = mat3::Identity() + Q*El*Q.transpose();
+        A = Q.transpose();
+        p = kappa*El.trace();
+    }
+    else
+    {
+        const Eigen::LLT<mat3> llt(mat3::Identity() + 2*El);
+        if (llt.info() != Eigen::Success) return false;
+        const mat3 Fl = llt.matrixU();      // Fl^T Fl = C
+        const double J = Fl.determinant();
+        if (!(J > 0)) return false;
+        F = Q*Fl*Q.transpose();
+        A = Fl.inverse()*Q.transpose();
+        p = kappa*std::log(J);
+    }
+    mat3 tau;
+    mat6 c;
+    if (!mat_->deviatoric(F, committed, trial, tau, c)) return false;
+    tau.diagonal().array() += p;
+    c += kappa*m*m.transpose();
+    if (!linear)
+    {
+        const vec6 iSym = (vec6() << 1, 1, 1, 0.5, 0.5, 0.5).finished();
+        c.diagonal() -= 2*p*iSym;
+    }
+    const mat3 Sl = A*tau*A.transpose();
+    for (int a = 0; a < 6; ++a) S(a) = Sl(voigtI[a], voigtJ[a]);
+    C = stressMap(A)*c*strainMap(A.transpose());
+    return S.allFinite() && C.allFinite();
+}
+
+
+bool planeStressMaterial::stress
+(
+    const mat3& Q,
+    const vec5& eps,
+    const materialState& committed,
+    materialState& trial,
+    vec5& S,
+    mat5& D
+) const
+{
+    if (committed.history.size() != nHistory_ + 1)
+    {
+        throw numericalError
+        (
+            "planeStressMaterial: a state with "
+          + std::to_string(committed.history.size()) + " entries, expected "
+          + std::to_string(nHistory_ + 1)
+        );
+    }
+    const double rk = std::sqrt(kappa_);
+    const double scale[5] = {1, 1, 1, rk, rk};
+    vec6 E;
+    for (int a = 0; a < 5; ++a) E(shellIndex[a]) = scale[a]*eps(a);
+    E(2) = thicknessStrain(committed);
+
+    const materialState mc = materialPart(committed);
+    materialState mt = mc;
+    vec6 S6;
+    mat6 C6;
+    // Residual tolerance: a strain error of 1e-12 at the material's
+    // initial stiffness
+    const double tol = 1e-12*(mat_->bulkModulus() + mat_->shearModulus());
+    bool converged = false;
+    for (int it = 0; it < 25; ++it)
+    {
+        if (!response(Q, E, mc, mt, S6, C6)) return false;
+        if (std::abs(S6(2)) <= tol)
+        {
+            converged = true;
+            break;
+        }
+        if (!(C6(2, 2) > 0)) return false;
+        E(2) -= S6(2)/C6(2, 2);
+    }
+    if (!converged) return false;
+
+    for (int a = 0; a < 5; ++a)
+    {
+        const int i = shellIndex[a];
+        S(a) = scale[a]*S6(i);
+        for (int b = 0; b < 5; ++b)
+        {
+            const int j = shellIndex[b];
+            D(a, b) = scale[a]*scale[b]*(C6(i, j) - C6(i, 2)*C6(2, j)/C6(2, 2));
+        }
+    }
+    trial.history.resize(nHistory_ + 1);
+    trial.history.head(nHistory_) = mt.history;
+    trial.history(nHistory_) = E(2);
+    return true;
+}
+
+} // namespace form
