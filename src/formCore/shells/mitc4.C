@@ -369,6 +369,34 @@ void mitc4::compute
 }
 
 
+void mitc4::pointStrains
+(
+    const std::array<shellNodeState, 4>& nodes,
+    std::vector<mat3>& Q,
+    std::vector<vec5>& eps
+) const
+{
+    Q.resize(nQuadrature());
+    eps.resize(nQuadrature());
+    std::vector<double> zt, wt;
+    gaussLegendre1D(nThickness_, zt, wt);
+    const double g = 1/std::sqrt(3.0);
+    const double pts[2] = {-g, g};
+    mat5 T;
+    vec5 E;
+    int q = 0;
+    for (double r : pts)
+    for (double s : pts)
+    for (int it = 0; it < nThickness_; ++it, ++q)
+    {
+        double detJ;
+        localFrame(r, s, zt[it], T, Q[q], detJ);
+        strains(r, s, zt[it], nodes, E, nullptr);
+        eps[q] = T*E;
+    }
+}
+
+
 double mitc4::energy(const std::array<shellNodeState, 4>& nodes) const
 {
     double W = 0;

@@ -5,6 +5,7 @@ Description
     A 3D material as a plane-stress shell law (planeStressMaterial.H).
 \*---------------------------------------------------------------------------*/
 #include "planeStressMaterial.H"
+#include <algorithm>
 #include <cmath>
 
 namespace form
@@ -155,6 +156,62 @@ bool planeStressMaterial::response
 }
 
 
+vec6 planeStressMaterial::localStrain(const vec5& eps, double E33) const
+{
+    const double rk = std::sqrt(kappa_);
+    const double scale[5] = {1, 1, 1, rk, rk};
+    vec6 E;
+    for (int a = 0; a < 5; ++a) E(shellIndex[a]) = scale[a]*eps(a);
+    E(2) = E33;
+    return E;
+}
+
+
+planeStressMaterial::pointOutput planeStressMaterial::output
+(
+    const mat3& Q,
+    const vec5& eps,
+    const materialState& state
+) const
+{
+    // The stress is an exact function of the strain and the converged
+    // history (elastoPlastic.H), so re-evaluating from the converged
+    // state returns the converged stress
+    const double E33 = thicknessStrain(state);
+    const vec6 E = localStrain(eps, E33);
+    const materialState m = materialPart(state);
+    materialState scratch = m;
+    vec6 S;
+    mat6 C;
+    pointOutput o;
+    o.thicknessStretch = std::sqrt(std::max(1 + 2*E33, 0.0));
+    if (!response(Q, E, m, scratch, S, C)) return o;
+    const mat3 El = fromVoigtStrain(E);
+    mat3 Fl;
+    if (mat_->geometricallyLinear())
+    {
+        Fl = mat3::Identity() + El;
+    }
+    else
+    {
+        const Eigen::LLT<mat3> llt(mat3::Identity() + 2*El);
+        Fl = llt.matrixU();
+    }
+    mat3 Sl;
+    for (int a = 0; a < 6; ++a)
+    {
+        Sl(voigtI[a], voigtJ[a]) = Sl(voigtJ[a], voigtI[a]) = S(a);
+    }
+    const mat3 F = Q*Fl*Q.transpose();
+    const mat3 tau = mat_->geometricallyLinear()
+      ? mat3(Q*Sl*Q.transpose())
+      : mat3(F*(Q*Sl*Q.transpose())*F.transpose());
+    o.cauchy = mat_->geometricallyLinear() ? tau : mat3(tau/F.determinant());
+    o.equivalentStrain = mat_->equivalentStrain(F, m);
+    return o;
+}
+
+
 bool planeStressMaterial::stress
 (
     const mat3& Q,
@@ -176,9 +233,7 @@ bool planeStressMaterial::stress
     }
     const double rk = std::sqrt(kappa_);
     const double scale[5] = {1, 1, 1, rk, rk};
-    vec6 E;
-    for (int a = 0; a < 5; ++a) E(shellIndex[a]) = scale[a]*eps(a);
-    E(2) = thicknessStrain(committed);
+    vec6 E = localStrain(eps, thicknessStrain(committed));
 
     const materialState mc = materialPart(committed);
     materialState mt = mc;

@@ -12,6 +12,7 @@ Description
 #include "contactModel.H"
 #include "coupledBlock.H"
 #include "formError.H"
+#include "planeStressMaterial.H"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -107,6 +108,31 @@ solidModel::impl::locateFaces(const std::string& name) const
 }
 
 
+bool solidModel::impl::computeElement
+(
+    int e,
+    matX& X,
+    matX& u,
+    vecX& fe,
+    matX* Ke
+)
+{
+    const int b = elemBlock[e];
+    if (!blocks[b].kernel)
+    {
+        return shells->compute
+        (
+            b, elemLocal[e], dofs, U, committed[e], trial[e], fe, Ke
+        );
+    }
+    gather(e, X, u);
+    return blocks[b].kernel->compute
+    (
+        X, u, *blocks[b].mat, committed[e], trial[e], fe, Ke, e
+    );
+}
+
+
 void solidModel::impl::build()
 {
     const int n = nDofs();
@@ -120,9 +146,10 @@ void solidModel::impl::build()
     {
         const elementBlock& b = mesh.blocks[elemBlock[e]];
         const int* nodes = b.nodes(elemLocal[e]);
+        const int nd = blocks[elemBlock[e]].nodeDofs;
         for (int a = 0; a < b.nodesPerElement; ++a)
         {
-            for (int i = 0; i < nDim; ++i)
+            for (int i = 0; i < nd; ++i)
             {
                 elementDofs.push_back(dofs.dof(nodes[a], i));
             }
@@ -172,19 +199,54 @@ solidModel::solidModel
           + " columns but nDim = " + std::to_string(m.nDim)
         );
     }
-    // Nodes with more dofs than displacement components (rotations)
-    // need elements that carry them: none of the solid elements does
-    for (const int c : m.mesh.nodeDofs)
+    // The material of a block (inputError naming the block if unknown)
+    const auto blockMaterial = [&m](const elementBlock& b)
     {
-        if (c != m.nDim)
+        auto mit = m.materials.find(b.materialName);
+        if (mit == m.materials.end() || !mit->second)
+        {
+            std::string valid;
+            for (const auto& p : m.materials) valid += " " + p.first;
+            throw inputError
+            (
+                "material",
+                "block '" + b.name + "': unknown material '" + b.materialName
+              + "'; defined:" + valid
+            );
+        }
+        return mit->second;
+    };
+
+    // Shell elements and their nodes (5 dofs: translations and two
+    // rotations); every other node carries nDim displacement dofs
+    {
+        std::vector<std::shared_ptr<const shellLaw>> laws;
+        bool any = false;
+        for (const elementBlock& b : m.mesh.blocks)
+        {
+            laws.emplace_back();
+            if (!shellSet::isShellType(b.elementType)) continue;
+            any = true;
+            laws.back() = std::make_shared<planeStressMaterial>
+            (
+                blockMaterial(b), b.shell.shearCorrection
+            );
+        }
+        if (any) m.shells = std::make_unique<shellSet>(m.mesh, laws);
+    }
+    for (int node = 0; node < int(m.mesh.nodeDofs.size()); ++node)
+    {
+        const int c = m.mesh.nodeDofs[node];
+        const bool shellNode = m.shells && m.shells->shellNode(node) >= 0;
+        if (c != m.nDim && !shellNode)
         {
             throw inputError
             (
                 "mesh",
-                "a node with " + std::to_string(c) + " dofs: the solid"
-                " elements carry nDim = " + std::to_string(m.nDim)
-              + " displacement dofs per node (rotational dofs need shell"
-                " elements)"
+                "node " + std::to_string(node) + " with " + std::to_string(c)
+              + " dofs: the solid elements carry nDim = "
+              + std::to_string(m.nDim) + " displacement dofs per node"
+                " (rotational dofs belong to shell nodes)"
             );
         }
     }
@@ -202,8 +264,10 @@ solidModel::solidModel
     for (const elementBlock& b : m.mesh.blocks)
     {
         impl::blockData d;
-        d.kernel = solidElement::New(b.elementType, analysis);
-        if (d.kernel->nNodes() != b.nodesPerElement)
+        const bool shell = shellSet::isShellType(b.elementType);
+        d.nodeDofs = shell ? shellSet::nodeDofs : m.nDim;
+        if (!shell) d.kernel = solidElement::New(b.elementType, analysis);
+        if (!shell && d.kernel->nNodes() != b.nodesPerElement)
         {
             throw inputError
             (
@@ -214,7 +278,7 @@ solidModel::solidModel
               + std::to_string(b.nodesPerElement) + " nodes per element"
             );
         }
-        if (d.kernel->nDim() != m.nDim)
+        if (!shell && d.kernel->nDim() != m.nDim)
         {
             throw inputError
             (
@@ -224,19 +288,7 @@ solidModel::solidModel
               + std::to_string(m.nDim) + "D"
             );
         }
-        auto mit = m.materials.find(b.materialName);
-        if (mit == m.materials.end() || !mit->second)
-        {
-            std::string valid;
-            for (const auto& p : m.materials) valid += " " + p.first;
-            throw inputError
-            (
-                "material",
-                "block '" + b.name + "': unknown material '" + b.materialName
-              + "'; defined:" + valid
-            );
-        }
-        d.mat = mit->second;
+        d.mat = blockMaterial(b);
         d.firstElement = int(m.elemBlock.size());
 
         const int blockIndex = int(m.blocks.size());
@@ -259,10 +311,21 @@ solidModel::solidModel
             }
             m.elemBlock.push_back(blockIndex);
             m.elemLocal.push_back(e);
-            m.committed.emplace_back
-            (
-                d.kernel->nQuadrature(), d.mat->initialState()
-            );
+            if (shell)
+            {
+                m.committed.emplace_back
+                (
+                    m.shells->nQuadrature(blockIndex),
+                    m.shells->law(blockIndex).initialState()
+                );
+            }
+            else
+            {
+                m.committed.emplace_back
+                (
+                    d.kernel->nQuadrature(), d.mat->initialState()
+                );
+            }
         }
         m.blocks.push_back(std::move(d));
     }
@@ -390,12 +453,9 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
                 const int e = elements[k];
                 try
                 {
-                    const impl::blockData& b = m.blocks[m.elemBlock[e]];
-                    m.gather(e, X, u);
-                    const bool ok = b.kernel->compute
+                    const bool ok = m.computeElement
                     (
-                        X, u, *b.mat, m.committed[e], m.trial[e], fe,
-                        wantTangent ? &Ke : nullptr, e
+                        e, X, u, fe, wantTangent ? &Ke : nullptr
                     );
                     if (!ok)
                     {
@@ -405,12 +465,12 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
 
                     const elementBlock& blk = m.mesh.blocks[m.elemBlock[e]];
                     const int* nodes = blk.nodes(m.elemLocal[e]);
-                    const int nDim = m.nDim;
+                    const int nd = m.blocks[m.elemBlock[e]].nodeDofs;
                     for (int a = 0; a < blk.nodesPerElement; ++a)
                     {
-                        for (int i = 0; i < nDim; ++i)
+                        for (int i = 0; i < nd; ++i)
                         {
-                            fint[m.dofs.dof(nodes[a], i)] += fe(a*nDim + i);
+                            fint[m.dofs.dof(nodes[a], i)] += fe(a*nd + i);
                         }
                     }
                     if (wantTangent && m.inertia && m.alpha != 0)
@@ -814,6 +874,7 @@ solidModel::savedState solidModel::save() const
     s.materialStates = m.committed;
     for (const auto& b : m.coupled) s.coupled.push_back(b->state());
     s.releaseLoads = releaseLoads();
+    if (m.shells) s.shells = m.shells->state();
     return s;
 }
 
@@ -829,12 +890,14 @@ void solidModel::restore(const savedState& s)
         m.coupled[i]->setState(s.coupled[i]);
     }
     setReleaseLoads(s.releaseLoads);
+    if (m.shells) m.shells->setState(s.shells);
 }
 
 
 void solidModel::commit()
 {
     impl& m = *impl_;
+    if (m.shells) m.shells->commit(m.dofs, m.U);
     m.Ucommitted = m.U;
     m.committed = m.trial;
     for (const auto& b : m.coupled) b->commit(m.U);
@@ -851,5 +914,27 @@ void solidModel::revert()
 
 
 phaseTimes& solidModel::times() { return impl_->times; }
+
+
+const shellSet* solidModel::shells() const { return impl_->shells.get(); }
+
+
+std::vector<double> solidModel::shellState() const
+{
+    return impl_->shells ? impl_->shells->state() : std::vector<double>();
+}
+
+
+void solidModel::setShellState(const std::vector<double>& s)
+{
+    if (impl_->shells) impl_->shells->setState(s);
+    else if (!s.empty())
+    {
+        throw numericalError
+        (
+            "solidModel::setShellState: the model has no shells"
+        );
+    }
+}
 
 } // namespace form

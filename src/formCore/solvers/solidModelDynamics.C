@@ -24,6 +24,15 @@ void solidModel::setInertia
 )
 {
     impl& m = *impl_;
+    if (m.shells)
+    {
+        throw inputError
+        (
+            "rho",
+            "shell elements carry no mass matrix yet (issue 22): no dynamic analysis"
+            " with shells"
+        );
+    }
     m.requireFinalised("setInertia");
     const int nElements = int(m.elemBlock.size());
     m.Me.assign(nElements, matX());

@@ -3,8 +3,8 @@
 -------------------------------------------------------------------------------
 Description
     solidModel: constraints (fixed, prescribed, released) and loads
-    (tractions, follower pressures, body force), and their assembly into
-    f_ext and the load stiffness (see solidModel.H).
+    (point loads, tractions, follower pressures, body force), and their
+    assembly into f_ext and the load stiffness (see solidModel.H).
 \*---------------------------------------------------------------------------*/
 #include "solidModelImpl.H"
 #include "contactModel.H"
@@ -29,6 +29,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
             fext(k) += bodyWeights(k)*g(dofs.component(k));
         }
     }
+    for (const auto& l : nodalLoads) fext(l.first) += l.second(t);
     for (const auto& l : tractions)
     {
         const vec3 tv = inPlane(l.t(t), l.faceSet);
@@ -114,13 +115,14 @@ void solidModel::addConstraint
 )
 {
     impl& m = *impl_;
-    if (component < 0 || component >= m.nDim)
+    const int nComponents = m.shells ? shellSet::nodeDofs : m.nDim;
+    if (component < 0 || component >= nComponents)
     {
         throw inputError
         (
             "component",
             "constraint component " + std::to_string(component)
-          + " out of range 0.." + std::to_string(m.nDim - 1)
+          + " out of range 0.." + std::to_string(nComponents - 1)
         );
     }
     for (int node : nodes)
@@ -131,6 +133,17 @@ void solidModel::addConstraint
             (
                 "nodes",
                 "constraint on non-existent node " + std::to_string(node)
+            );
+        }
+        if (component >= m.dofs.count(node))
+        {
+            throw inputError
+            (
+                "component",
+                "constraint component " + std::to_string(component)
+              + " of node " + std::to_string(node) + ", which carries "
+              + std::to_string(m.dofs.count(node)) + " dofs (the rotations"
+                " 3 and 4 belong to shell nodes)"
             );
         }
         m.constraints[m.dofs.dof(node, component)] = value;
@@ -207,6 +220,43 @@ void solidModel::addTraction(const std::string& faceSet, vectorTimeFunction t)
 }
 
 
+void solidModel::addNodalLoad
+(
+    const std::vector<int>& nodes,
+    int component,
+    timeFunction value
+)
+{
+    impl& m = *impl_;
+    if (!value)
+    {
+        throw numericalError("solidModel::addNodalLoad: no load function");
+    }
+    for (int node : nodes)
+    {
+        if (node < 0 || node >= m.mesh.nNodes())
+        {
+            throw inputError
+            (
+                "nodes",
+                "point load on non-existent node " + std::to_string(node)
+            );
+        }
+        if (component < 0 || component >= m.dofs.count(node))
+        {
+            throw inputError
+            (
+                "component",
+                "point load component " + std::to_string(component)
+              + " of node " + std::to_string(node) + ", which carries "
+              + std::to_string(m.dofs.count(node)) + " dofs"
+            );
+        }
+        m.nodalLoads.emplace_back(m.dofs.dof(node, component), value);
+    }
+}
+
+
 void solidModel::addPressure(const std::string& faceSet, timeFunction p)
 {
     impl& m = *impl_;
@@ -219,18 +269,23 @@ void solidModel::addPressure(const std::string& faceSet, timeFunction p)
 void solidModel::releaseConstraint(const std::vector<int>& nodes, int component)
 {
     impl& m = *impl_;
-    if (component < 0 || component >= m.nDim)
+    const int nComponents = m.shells ? shellSet::nodeDofs : m.nDim;
+    if (component < 0 || component >= nComponents)
     {
         throw inputError
         (
             "component",
             "released component " + std::to_string(component)
-          + " out of range 0.." + std::to_string(m.nDim - 1)
+          + " out of range 0.." + std::to_string(nComponents - 1)
         );
     }
     for (int node : nodes)
     {
-        if (node >= 0 && node < m.mesh.nNodes())
+        if
+        (
+            node >= 0 && node < m.mesh.nNodes()
+         && component < m.dofs.count(node)
+        )
         {
             m.constraints.erase(m.dofs.dof(node, component));
         }
@@ -242,6 +297,15 @@ void solidModel::releaseConstraint(const std::vector<int>& nodes, int component)
 void solidModel::setBodyForce(double rho, vectorTimeFunction g)
 {
     impl& m = *impl_;
+    if (m.shells)
+    {
+        throw inputError
+        (
+            "bodyForce",
+            "shell elements carry no mass matrix yet (issue 22): no body force"
+            " with shells"
+        );
+    }
     m.requireFinalised("setBodyForce");
     if (!(rho > 0) || !std::isfinite(rho))
     {

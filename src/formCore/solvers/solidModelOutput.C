@@ -166,6 +166,15 @@ std::vector<elementResult> solidModel::elementResults() const
             try
             {
                 const impl::blockData& b = m.blocks[m.elemBlock[e]];
+                if (!b.kernel)
+                {
+                    results[e] = m.shells->result
+                    (
+                        m.elemBlock[e], m.elemLocal[e], m.dofs, m.U,
+                        m.trial[e]
+                    );
+                    continue;
+                }
                 m.gather(e, X, u);
                 results[e] = b.kernel->result(X, u, *b.mat, m.trial[e]);
             }

@@ -1,0 +1,390 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    The shell elements of a solid model and their nodal directors
+    (shellSet.H).
+\*---------------------------------------------------------------------------*/
+#include "shellSet.H"
+#include "quadShape.H"
+#include "planeStressMaterial.H"
+#include <algorithm>
+#include <cmath>
+
+namespace form
+{
+
+bool shellSet::isShellType(const std::string& type)
+{
+    return type == "MITC4";
+}
+
+
+std::string shellSet::validTypes()
+{
+    return "MITC4";
+}
+
+
+void shellSet::assignNodeDofs(feMesh& mesh)
+{
+    mesh.nodeDofs.assign(mesh.nNodes(), mesh.nDim);
+    for (const elementBlock& b : mesh.blocks)
+    {
+        if (!isShellType(b.elementType)) continue;
+        for (const int n : b.connectivity) mesh.nodeDofs[n] = nodeDofs;
+    }
+}
+
+
+namespace
+{
+
+//- The lamina normal G_r x G_s of a bilinear quadrilateral at corner k
+vec3 cornerNormal(const Eigen::Matrix<double, 4, 3>& X, int k)
+{
+    static const double rn[4] = {-1, 1, 1, -1}, sn[4] = {-1, -1, 1, 1};
+    quadShape<4>::vecN N;
+    quadShape<4>::matN2 dN;
+    quadShape<4>::eval(rn[k], sn[k], N, dN);
+    const vec3 Gr = X.transpose()*dN.col(0);
+    const vec3 Gs = X.transpose()*dN.col(1);
+    return Gr.cross(Gs);
+}
+
+} // anonymous namespace
+
+
+shellSet::shellSet
+(
+    const feMesh& mesh,
+    const std::vector<std::shared_ptr<const shellLaw>>& laws
+)
+:
+    shellNode_(mesh.nNodes(), -1),
+    elements_(mesh.blocks.size()),
+    connectivity_(mesh.blocks.size())
+{
+    const std::size_t nb = mesh.blocks.size();
+    bool any = false;
+    for (std::size_t b = 0; b < nb; ++b)
+    {
+        const elementBlock& blk = mesh.blocks[b];
+        if (!isShellType(blk.elementType)) continue;
+        any = true;
+        const std::string where = "block '" + blk.name + "'";
+        if (mesh.nDim != 3)
+        {
+            throw inputError
+            (
+                "elementType",
+                where + ": shell elements (" + blk.elementType
+              + ") need a 3D analysis (solid3D)"
+            );
+        }
+        if (blk.nodesPerElement != 4)
+        {
+            throw inputError
+            (
+                "elementType",
+                where + ": " + blk.elementType + " has 4 nodes, the block "
+              + std::to_string(blk.nodesPerElement)
+            );
+        }
+        if (!(blk.shell.thickness > 0) || !std::isfinite(blk.shell.thickness))
+        {
+            throw inputError
+            (
+                "thickness",
+                where + ": the shell thickness must be a positive number, not "
+              + formatNumber(blk.shell.thickness)
+            );
+        }
+        if (blk.shell.points < 1 || blk.shell.points > 5)
+        {
+            throw inputError
+            (
+                "thicknessPoints",
+                where + ": 1 to 5 Gauss points through the thickness, not "
+              + std::to_string(blk.shell.points)
+            );
+        }
+        if (b >= laws.size() || !laws[b])
+        {
+            throw numericalError("shellSet: " + where + " has no lamina law");
+        }
+        for (const int n : blk.connectivity)
+        {
+            if (n < 0 || n >= mesh.nNodes())
+            {
+                throw inputError
+                (
+                    "mesh",
+                    where + " refers to node " + std::to_string(n) + " of "
+                  + std::to_string(mesh.nNodes())
+                );
+            }
+            if (shellNode_[n] < 0)
+            {
+                shellNode_[n] = int(nodeOf_.size());
+                nodeOf_.push_back(n);
+            }
+        }
+    }
+    if (!any) return;
+
+    const dofMap dofs = dofMap::of(mesh);
+    for (const int n : nodeOf_)
+    {
+        if (dofs.count(n) != nodeDofs)
+        {
+            throw inputError
+            (
+                "mesh",
+                "shell node " + std::to_string(n) + " carries "
+              + std::to_string(dofs.count(n)) + " dofs instead of 5"
+                " (shellSet::assignNodeDofs)"
+            );
+        }
+    }
+
+    // Initial directors: the normalised sums of the corner normals
+    const auto corners = [&](const elementBlock& blk, int e)
+    {
+        Eigen::Matrix<double, 4, 3> X;
+        for (int k = 0; k < 4; ++k) X.row(k) = mesh.X.row(blk.nodes(e)[k]);
+        return X;
+    };
+    std::vector<vec3> sum(nodeOf_.size(), vec3::Zero());
+    for (std::size_t b = 0; b < nb; ++b)
+    {
+        const elementBlock& blk = mesh.blocks[b];
+        if (!isShellType(blk.elementType)) continue;
+        for (int e = 0; e < blk.nElements(); ++e)
+        {
+            const Eigen::Matrix<double, 4, 3> X = corners(blk, e);
+            for (int k = 0; k < 4; ++k)
+            {
+                const vec3 n = cornerNormal(X, k);
+                if (!(n.norm() > 0))
+                {
+                    throw inputError
+                    (
+                        "mesh",
+                        "block '" + blk.name + "' element "
+                      + std::to_string(e) + ": degenerate at node "
+                      + std::to_string(blk.nodes(e)[k])
+                    );
+                }
+                sum[shellNode_[blk.nodes(e)[k]]] += n.normalized();
+            }
+        }
+    }
+    V0_.resize(nodeOf_.size());
+    for (std::size_t s = 0; s < nodeOf_.size(); ++s)
+    {
+        if (!(sum[s].norm() > 1e-8))
+        {
+            throw inputError
+            (
+                "mesh",
+                "shell node " + std::to_string(nodeOf_[s]) + ": the normals"
+                " of its elements cancel (elements oriented oppositely)"
+            );
+        }
+        V0_[s] = sum[s].normalized();
+    }
+    const double cosLimit = std::cos(M_PI/4);
+    for (std::size_t b = 0; b < nb; ++b)
+    {
+        const elementBlock& blk = mesh.blocks[b];
+        if (!isShellType(blk.elementType)) continue;
+        const auto law = laws[b];
+        connectivity_[b] = blk.connectivity;
+        for (int e = 0; e < blk.nElements(); ++e)
+        {
+            const Eigen::Matrix<double, 4, 3> X = corners(blk, e);
+            Eigen::Matrix<double, 4, 3> V0;
+            for (int k = 0; k < 4; ++k)
+            {
+                const int s = shellNode_[blk.nodes(e)[k]];
+                V0.row(k) = V0_[s].transpose();
+                if (cornerNormal(X, k).normalized().dot(V0_[s]) < cosLimit)
+                {
+                    throw inputError
+                    (
+                        "mesh",
+                        "shell node " + std::to_string(nodeOf_[s])
+                      + ": the surface folds, kinks or branches there (an"
+                        " element normal departs from the node's director"
+                        " by more than 45 degrees, or the elements are"
+                        " oriented oppositely); nodes with a drilling"
+                        " rotation are not supported: round the kink"
+                        " with a radius of a few elements"
+                    );
+                }
+            }
+            elements_[b].emplace_back
+            (
+                X, V0, Eigen::Vector4d::Constant(blk.shell.thickness), law,
+                blk.shell.points
+            );
+        }
+    }
+    frames_.reserve(V0_.size());
+    for (const vec3& v : V0_) frames_.push_back(shellDirector::of(v));
+    ref_.assign(V0_.size(), Eigen::Vector2d::Zero());
+}
+
+
+std::array<shellNodeState, 4> shellSet::nodeStates
+(
+    int block,
+    int element,
+    const dofMap& dofs,
+    const vecX& U
+) const
+{
+    const int* nodes = connectivity_[block].data() + 4*element;
+    std::array<shellNodeState, 4> states;
+    for (int k = 0; k < 4; ++k)
+    {
+        const int n = nodes[k];
+        const int s = shellNode_[n];
+        states[k].x =
+            elements_[block][element].referencePoint(k) + dofs.vector3(U, n);
+        const Eigen::Vector2d d = increment(s, dofs, U);
+        states[k].director = frames_[s].at(d(0), d(1));
+    }
+    return states;
+}
+
+
+bool shellSet::compute
+(
+    int block,
+    int element,
+    const dofMap& dofs,
+    const vecX& U,
+    const std::vector<materialState>& committed,
+    std::vector<materialState>& trial,
+    vecX& fe,
+    matX* Ke
+) const
+{
+    mitc4::vecQ f;
+    mitc4::matQ K;
+    const bool ok = elements_[block][element].compute
+    (
+        nodeStates(block, element, dofs, U), committed, trial, f,
+        Ke ? &K : nullptr
+    );
+    fe = f;
+    if (Ke) *Ke = K;
+    return ok;
+}
+
+
+elementResult shellSet::result
+(
+    int block,
+    int element,
+    const dofMap& dofs,
+    const vecX& U,
+    const std::vector<materialState>& states
+) const
+{
+    const mitc4& el = elements_[block][element];
+    const auto* law = dynamic_cast<const planeStressMaterial*>(&el.law());
+    std::vector<mat3> Q;
+    std::vector<vec5> eps;
+    el.pointStrains(nodeStates(block, element, dofs, U), Q, eps);
+    elementResult r;
+    if (!law) return r;
+    const int nq = int(Q.size());
+    for (int q = 0; q < nq; ++q)
+    {
+        const planeStressMaterial::pointOutput o =
+            law->output(Q[q], eps[q], states[q]);
+        r.cauchy += o.cauchy/nq;
+        r.equivalentStrain += o.equivalentStrain/nq;
+        r.thicknessStretch = q
+          ? std::min(r.thicknessStretch, o.thicknessStretch)
+          : o.thicknessStretch;
+    }
+    r.pressure = -r.cauchy.trace()/3;
+    return r;
+}
+
+
+vec3 shellSet::director(int node, const dofMap& dofs, const vecX& U) const
+{
+    const int s = shellNode_[node];
+    const Eigen::Vector2d d = increment(s, dofs, U);
+    return frames_[s].at(d(0), d(1)).V;
+}
+
+
+void shellSet::commit(const dofMap& dofs, const vecX& U)
+{
+    for (std::size_t s = 0; s < frames_.size(); ++s)
+    {
+        const Eigen::Vector2d d = increment(int(s), dofs, U);
+        frames_[s].commit(d(0), d(1));
+        ref_[s] += d;
+    }
+}
+
+
+std::vector<double> shellSet::state() const
+{
+    std::vector<double> v;
+    v.reserve(11*frames_.size());
+    for (std::size_t s = 0; s < frames_.size(); ++s)
+    {
+        for (const vec3* a : {&frames_[s].V, &frames_[s].V1, &frames_[s].V2})
+        {
+            v.insert(v.end(), a->data(), a->data() + 3);
+        }
+        v.push_back(ref_[s](0));
+        v.push_back(ref_[s](1));
+    }
+    return v;
+}
+
+
+void shellSet::setState(const std::vector<double>& v)
+{
+    if (v.size() != 11*frames_.size())
+    {
+        throw numericalError
+        (
+            "shellSet::setState: " + std::to_string(v.size())
+          + " values for " + std::to_string(frames_.size())
+          + " shell nodes (11 each)"
+        );
+    }
+    for (std::size_t s = 0; s < frames_.size(); ++s)
+    {
+        const double* p = v.data() + 11*s;
+        shellDirector f;
+        f.V = vec3(p[0], p[1], p[2]);
+        f.V1 = vec3(p[3], p[4], p[5]);
+        f.V2 = vec3(p[6], p[7], p[8]);
+        const double err =
+            std::abs(f.V.norm() - 1) + std::abs(f.V1.norm() - 1)
+          + std::abs(f.V2.norm() - 1) + (f.V1.cross(f.V2) - f.V).norm();
+        if (!(err < 1e-8))
+        {
+            throw numericalError
+            (
+                "shellSet::setState: the frame of shell node "
+              + std::to_string(nodeOf_[s]) + " is not orthonormal"
+            );
+        }
+        frames_[s] = f;
+        ref_[s] = Eigen::Vector2d(p[9], p[10]);
+    }
+}
+
+} // namespace form
