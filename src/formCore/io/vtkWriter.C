@@ -81,6 +81,7 @@ int form::vtkWriter::cellType(int nodesPerElement, int nDim)
 {
     if (nDim == 2 && nodesPerElement == 4) return 9;    // VTK_QUAD
     if (nDim == 2 && nodesPerElement == 9) return 28;   // VTK_BIQUADRATIC_QUAD
+    if (nDim == 3 && nodesPerElement == 4) return 9;    // VTK_QUAD (shells)
     if (nDim == 3 && nodesPerElement == 8) return 12;   // VTK_HEXAHEDRON
     if (nDim == 3 && nodesPerElement == 27) return 29;  // VTK_TRIQUADRATIC_HEX
     throw numericalError
@@ -188,6 +189,24 @@ void form::vtkWriter::write
     scalarArray("p", [](const elementResult& r) { return r.pressure; });
     scalarArray("epsilonEq",
         [](const elementResult& r) { return r.equivalentStrain; });
+    // Shells: the current thickness (the section's times the smallest
+    // thickness stretch of the element's points)
+    bool shells = false;
+    for (const auto& b : mesh.blocks) shells = shells || b.shell.thickness > 0;
+    if (shells)
+    {
+        os << "<DataArray type=\"Float64\" Name=\"thickness\""
+           << " format=\"ascii\">\n";
+        std::size_t k = 0;
+        for (const auto& b : mesh.blocks)
+        {
+            for (int e = 0; e < b.nElements(); ++e, ++k)
+            {
+                os << b.shell.thickness*results[k].thicknessStretch << '\n';
+            }
+        }
+        os << "</DataArray>\n";
+    }
     os << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 
     const std::string file = name_ + "_" + std::to_string(next_++) + ".vtu";

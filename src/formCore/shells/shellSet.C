@@ -193,6 +193,17 @@ shellSet::shellSet
             );
         }
         V0_[s] = sum[s].normalized();
+        // A director given by the mesh (a sheet's through-thickness
+        // edge: the exact normal of a curved sheet, also at its edges and
+        // symmetry planes), on the elements' side
+        if (mesh.directors.rows() == mesh.nNodes())
+        {
+            const vec3 d = mesh.directors.row(nodeOf_[s]).transpose();
+            if (d.norm() > 0)
+            {
+                V0_[s] = d.dot(V0_[s]) < 0 ? vec3(-d.normalized()) : vec3(d.normalized());
+            }
+        }
     }
     const double cosLimit = std::cos(M_PI/4);
     for (std::size_t b = 0; b < nb; ++b)
@@ -325,6 +336,35 @@ vec3 shellSet::director(int node, const dofMap& dofs, const vecX& U) const
 }
 
 
+void shellSet::alignFrame(int node, const vec3& axis)
+{
+    const int s = shellNode_[node];
+    if (s < 0)
+    {
+        throw numericalError
+        (
+            "shellSet::alignFrame: node " + std::to_string(node)
+          + " is not a shell node"
+        );
+    }
+    shellDirector& f = frames_[s];
+    const vec3 a = axis - axis.dot(f.V)*f.V;
+    if (!(a.norm() > 1e-6*axis.norm()))
+    {
+        throw inputError
+        (
+            "normal",
+            "shell node " + std::to_string(node) + ": the direction "
+          + formatNumber(axis(0)) + " " + formatNumber(axis(1)) + " "
+          + formatNumber(axis(2)) + " is along the shell's normal there"
+            " (a symmetry plane must cut the sheet, not lie in it)"
+        );
+    }
+    f.V1 = a.normalized();
+    f.V2 = f.V.cross(f.V1);
+}
+
+
 void shellSet::commit(const dofMap& dofs, const vecX& U)
 {
     for (std::size_t s = 0; s < frames_.size(); ++s)
@@ -332,6 +372,16 @@ void shellSet::commit(const dofMap& dofs, const vecX& U)
         const Eigen::Vector2d d = increment(int(s), dofs, U);
         frames_[s].commit(d(0), d(1));
         ref_[s] += d;
+    }
+}
+
+
+void shellSet::foldedRotations(const dofMap& dofs, vecX& U) const
+{
+    for (std::size_t s = 0; s < frames_.size(); ++s)
+    {
+        U(dofs.dof(nodeOf_[s], 3)) = ref_[s](0);
+        U(dofs.dof(nodeOf_[s], 4)) = ref_[s](1);
     }
 }
 

@@ -919,6 +919,20 @@ phaseTimes& solidModel::times() { return impl_->times; }
 const shellSet* solidModel::shells() const { return impl_->shells.get(); }
 
 
+void solidModel::alignShellFrames
+(
+    const std::vector<int>& nodes,
+    const vec3& axis
+)
+{
+    if (!impl_->shells) return;
+    for (const int n : nodes)
+    {
+        if (impl_->shells->shellNode(n) >= 0) impl_->shells->alignFrame(n, axis);
+    }
+}
+
+
 std::vector<double> solidModel::shellState() const
 {
     return impl_->shells ? impl_->shells->state() : std::vector<double>();
@@ -927,7 +941,13 @@ std::vector<double> solidModel::shellState() const
 
 void solidModel::setShellState(const std::vector<double>& s)
 {
-    if (impl_->shells) impl_->shells->setState(s);
+    impl& m = *impl_;
+    if (m.shells)
+    {
+        m.shells->setState(s);
+        m.shells->foldedRotations(m.dofs, m.U);
+        m.shells->foldedRotations(m.dofs, m.Ucommitted);
+    }
     else if (!s.empty())
     {
         throw numericalError

@@ -36,10 +36,23 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
         for (const faceRef& face : l.faces)
         {
             gatherFace(face, X, u);
-            f =
-                nDim == 3
-              ? faceLoad::deadTraction(X, tv)
-              : edgeLoad::deadTraction(X, tv.head<2>(), analysis);
+            if (nDim == 3 && face.nodes.size() == 2)
+            {
+                // A shell edge: the traction acts on the side face of
+                // the sheet, its length times the thickness
+                const double area =
+                    (X.row(1) - X.row(0)).norm()
+                   *mesh.blocks[elemBlock[face.element]].shell.thickness;
+                f.resize(6);
+                f << 0.5*area*tv, 0.5*area*tv;
+            }
+            else
+            {
+                f =
+                    nDim == 3
+                  ? faceLoad::deadTraction(X, tv)
+                  : edgeLoad::deadTraction(X, tv.head<2>(), analysis);
+            }
             for (std::size_t a = 0; a < face.nodes.size(); ++a)
             {
                 for (int i = 0; i < nDim; ++i)
@@ -84,16 +97,18 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
 
             const int nE = pattern.nElementDofs(face.element);
             const int* code = pattern.scatter(face.element);
+            // Dofs per node of the owning element (5 for shells)
+            const int nd = blocks[elemBlock[face.element]].nodeDofs;
             for (int b = 0; b < nf; ++b)
             {
                 for (int j = 0; j < nDim; ++j)
                 {
-                    const int lb = face.localNodes[b]*nDim + j;
+                    const int lb = face.localNodes[b]*nd + j;
                     for (int a = 0; a < nf; ++a)
                     {
                         for (int i = 0; i < nDim; ++i)
                         {
-                            const int la = face.localNodes[a]*nDim + i;
+                            const int la = face.localNodes[a]*nd + i;
                             const int c = code[la + nE*lb];
                             const double v = K(a*nDim + i, b*nDim + j);
                             if (c >= 0) ff[c] += v;
@@ -260,7 +275,18 @@ void solidModel::addNodalLoad
 void solidModel::addPressure(const std::string& faceSet, timeFunction p)
 {
     impl& m = *impl_;
-    m.faceSet(faceSet);
+    for (const feFace& f : m.faceSet(faceSet))
+    {
+        if (m.nDim == 3 && f.nodes.size() == 2)
+        {
+            throw inputError
+            (
+                faceSet,
+                "a pressure on '" + faceSet + "', a side (edge) of a shell:"
+                " pressures act on the faces of the sheet"
+            );
+        }
+    }
     m.pressures.push_back({faceSet, std::move(p), {}});
     if (m.finalised) m.pressures.back().faces = m.locateFaces(faceSet);
 }

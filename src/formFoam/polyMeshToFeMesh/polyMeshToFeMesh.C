@@ -6,6 +6,7 @@ Description
     OpenFOAM polyMesh (from blockMesh) to a finite-element quad mesh.
 \*---------------------------------------------------------------------------*/
 #include "polyMeshToFeMesh.H"
+#include "shellSet.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
 #include "HashTable.H"
@@ -134,7 +135,8 @@ Foam::polyMeshToFeMesh::polyMeshToFeMesh
     const fileName& properties,
     label nodesPerElement,
     const word& elementType,
-    const word& materialName
+    const word& materialName,
+    const form::shellSection& shell
 )
 :
     mesh_(mesh),
@@ -203,6 +205,11 @@ Foam::polyMeshToFeMesh::polyMeshToFeMesh
                 << exit(FatalError);
         }
         projection_ = projection::space;
+        if (form::shellSet::isShellType(elementType))
+        {
+            buildShell(elementType, materialName, shell, properties);
+            return;
+        }
         build3D(nodesPerElement, elementType, materialName);
         return;
     }

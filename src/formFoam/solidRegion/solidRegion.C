@@ -5,6 +5,7 @@ Description
     Implementation of solidRegion.H: One solid region of a case.
 \*---------------------------------------------------------------------------*/
 #include "solidRegion.H"
+#include "shellSet.H"
 #include "contactModel.H"
 #include "dictionaryChecks.H"
 #include "Function1.H"
@@ -118,7 +119,11 @@ void Foam::solidRegion::readMaterial(const dictionary& dict)
 
 Foam::wordList Foam::solidRegion::conditionTypes()
 {
-    return {"fixedDisplacement", "rigidMotion", "traction", "pressure", "free"};
+    return
+    {
+        "fixedDisplacement", "clamped", "symmetryPlane", "rigidMotion",
+        "traction", "pressure", "free"
+    };
 }
 
 
@@ -163,7 +168,8 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
     checkInput(properties_, properties_.objectPath());
     checkKeywords
     (
-        properties_, {"analysisType", "elementType", "material", "bodyForce"}
+        properties_,
+        {"analysisType", "elementType", "material", "bodyForce", "shell"}
     );
     const word analysisName = properties_.get<word>("analysisType");
     try
@@ -177,14 +183,42 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
 
     elementType_ = properties_.get<word>("elementType");
     label nodesPerElement = 0;
-    try
+    form::shellSection shell;
+    if (form::shellSet::isShellType(elementType_))
     {
-        nodesPerElement =
-            form::solidElement::New(elementType_, analysis_)->nNodes();
+        nodesPerElement = 4;
+        shell = readShellSection();
     }
-    catch (const form::inputError& err)
+    else
     {
-        fatalInput(properties_, err);
+        try
+        {
+            nodesPerElement =
+                form::solidElement::New(elementType_, analysis_)->nNodes();
+        }
+        catch (const form::inputError& err)
+        {
+            // The solid elements' list, and the shells
+            fatalInput
+            (
+                properties_,
+                form::inputError
+                (
+                    err.entry(),
+                    std::string(err.what()) + "; shell elements: "
+                  + form::shellSet::validTypes()
+                )
+            );
+        }
+        if (properties_.found("shell"))
+        {
+            FatalIOErrorInFunction(properties_)
+                << "Entry 'shell' in " << properties_.objectPath()
+                << ": a shell section, but elementType " << elementType_
+                << " is a solid element (shell elements: "
+                << form::shellSet::validTypes().c_str() << ")"
+                << exit(FatalIOError);
+        }
     }
 
     readMaterial(subDictOf(properties_, "material", "{ type ...; E ...; }"));
@@ -228,7 +262,8 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
             properties_.objectPath(),
             nodesPerElement,
             elementType_,
-            "material"
+            "material",
+            shell
         )
     );
 
@@ -317,6 +352,55 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
 Foam::solidRegion::~solidRegion() = default;
 
 
+form::shellSection Foam::solidRegion::readShellSection() const
+{
+    const fileName file = properties_.objectPath();
+    if (analysis_ != form::analysisType::solid3D)
+    {
+        FatalIOErrorInFunction(properties_)
+            << "Entry 'elementType' in " << file << ": shell elements ("
+            << elementType_ << ") need analysisType solid3D"
+            << exit(FatalIOError);
+    }
+    form::shellSection section;
+    if (!properties_.found("shell")) return section;
+    const dictionary& sd = subDictOf
+    (
+        properties_, "shell", "{ thickness 1e-3; thicknessPoints 5; }"
+    );
+    checkKeywords(sd, {"thickness", "thicknessPoints", "shearCorrection"});
+    if (sd.found("thickness"))
+    {
+        section.thickness = sd.get<scalar>("thickness");
+        if (!(section.thickness > 0) || !std::isfinite(section.thickness))
+        {
+            FatalIOErrorInFunction(sd)
+                << "Entry 'shell/thickness' in " << file << ": "
+                << section.thickness << " is not a positive thickness"
+                << exit(FatalIOError);
+        }
+    }
+    section.points = sd.getOrDefault<label>("thicknessPoints", section.points);
+    if (section.points < 1 || section.points > 5)
+    {
+        FatalIOErrorInFunction(sd)
+            << "Entry 'shell/thicknessPoints' in " << file << ": "
+            << section.points << " Gauss points through the thickness;"
+            << " valid: 1 to 5" << exit(FatalIOError);
+    }
+    section.shearCorrection =
+        sd.getOrDefault<scalar>("shearCorrection", section.shearCorrection);
+    if (!(section.shearCorrection > 0 && section.shearCorrection <= 1))
+    {
+        FatalIOErrorInFunction(sd)
+            << "Entry 'shell/shearCorrection' in " << file << ": "
+            << section.shearCorrection << " is not in (0, 1]"
+            << exit(FatalIOError);
+    }
+    return section;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 Foam::string Foam::solidRegion::describe() const
@@ -341,6 +425,32 @@ Foam::scalar Foam::solidRegion::displacementAt
 ) const
 {
     const form::feMesh& fe = feMesh_->feMesh();
+    if (model_->shells())
+    {
+        // Shells: the displacement of the mid-surface node at the point
+        const form::vecX x = feMesh_->toFe(pt);
+        int nearest = -1;
+        double d2 = 0;
+        for (int n = 0; n < fe.nNodes(); ++n)
+        {
+            const double d = (fe.X.row(n).transpose() - x).squaredNorm();
+            if (nearest < 0 || d < d2)
+            {
+                nearest = n;
+                d2 = d;
+            }
+        }
+        const double size = fe.X.cwiseAbs().maxCoeff();
+        if (nearest < 0 || std::sqrt(d2) > 1e-6*max(size, 1.0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Point " << pt << " in " << dict.name() << " is not a"
+                << " node of the mid-surface of the shell region '" << name_
+                << "' (nearest node at distance " << std::sqrt(d2) << ");"
+                << " shell results are read at nodes" << exit(FatalIOError);
+        }
+        return model_->displacement()(nearest, component);
+    }
     const form::pointLocation loc =
         form::locatePoint(fe, feMesh_->toFe(pt), 1e-6);
     if (!loc.found())

@@ -6,6 +6,7 @@
     free), and the process-step actions on constraints (release, hold, pin)
 \*---------------------------------------------------------------------------*/
 #include "solidRegion.H"
+#include "shellSet.H"
 #include "dictionaryChecks.H"
 #include "Function1.H"
 #include "IFstream.H"
@@ -14,6 +15,22 @@
 #include "wedgePolyPatch.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+std::vector<int> Foam::solidRegion::shellNodesOf
+(
+    const std::vector<int>& nodes
+) const
+{
+    std::vector<int> s;
+    const form::shellSet* shells = model_->shells();
+    if (!shells) return s;
+    for (const int n : nodes)
+    {
+        if (shells->shellNode(n) >= 0) s.push_back(n);
+    }
+    return s;
+}
+
 
 void Foam::solidRegion::applyRigidMotion
 (
@@ -245,6 +262,55 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
                 f = [disp, c](double t) { return disp->value(t)[c]; };
             }
             model_->addConstraint(nodes, c, f);
+        }
+    }
+    else if (type == "clamped")
+    {
+        // Translations and, on shell nodes, the director held
+        checkKeywords(pd, {"type", "value"});
+        for (label c = 0; c < fe.nDim; ++c) model_->addConstraint(nodes, c);
+        const std::vector<int> shellNodes = shellNodesOf(nodes);
+        if (!shellNodes.empty())
+        {
+            model_->addConstraint(shellNodes, 3);
+            model_->addConstraint(shellNodes, 4);
+        }
+    }
+    else if (type == "symmetryPlane")
+    {
+        // u . n = 0; on shell nodes the director turns only about n
+        checkKeywords(pd, {"type", "normal", "value"});
+        const vector n = pd.get<vector>("normal");
+        label c = -1;
+        for (direction i = 0; i < 3; ++i)
+        {
+            const vector e(i == 0, i == 1, i == 2);
+            if (mag(n) > 0 && mag((n/mag(n)) ^ e) < 1e-9) c = i;
+        }
+        if (c < 0 || c >= fe.nDim || feMesh_->proj() == polyMeshToFeMesh::projection::wedge)
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry 'normal' in " << pd.name() << ": " << n
+                << "; a symmetry plane's normal must be a coordinate axis"
+                << " of the FE space (x, y" << (fe.nDim == 3 ? ", z" : "")
+                << ")" << exit(FatalIOError);
+        }
+        model_->addConstraint(nodes, c);
+        const std::vector<int> shellNodes = shellNodesOf(nodes);
+        if (!shellNodes.empty())
+        {
+            try
+            {
+                model_->alignShellFrames
+                (
+                    shellNodes, form::vec3(n.x(), n.y(), n.z())
+                );
+            }
+            catch (const form::inputError& err)
+            {
+                fatalInput(pd, err);
+            }
+            model_->addConstraint(shellNodes, 4);
         }
     }
     else if (type == "traction")

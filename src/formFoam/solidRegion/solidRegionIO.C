@@ -6,6 +6,7 @@
     formScene::writeTime), the VTK series, and the state read on a restart
 \*---------------------------------------------------------------------------*/
 #include "solidRegion.H"
+#include "shellSet.H"
 #include "contactModel.H"
 #include "dictionaryChecks.H"
 #include "Function1.H"
@@ -48,6 +49,7 @@ bool Foam::solidRegion::write()
         dimensionedVector(dimLength, Zero)
     );
     const pointField& pts = mesh_->points();
+    const form::shellSet* shells = model_->shells();
     forAll(pts, pointi)
     {
         const label n = feMesh_->pointToNode()[pointi];
@@ -55,6 +57,19 @@ bool Foam::solidRegion::write()
         {
             pointD[pointi] =
                 feMesh_->toSpace(pts[pointi], U.row(n).transpose());
+        }
+        if (n >= 0 && shells && shells->shellNode(n) >= 0)
+        {
+            // A point of the sheet's faces: on its node's director line,
+            // at z along the initial director; it turns with the director
+            const form::vec3 V0 = shells->initialDirector(n);
+            const form::vec3 V =
+                shells->director(n, model_->dofs(), model_->U());
+            const form::vec3 d =
+                form::vec3(pts[pointi].x(), pts[pointi].y(), pts[pointi].z())
+              - fe.X.row(n).transpose();
+            const form::vec3 turn = d.dot(V0)*(V - V0);
+            pointD[pointi] += vector(turn(0), turn(1), turn(2));
         }
     }
 
@@ -71,7 +86,17 @@ bool Foam::solidRegion::write()
     const int nDim = fe.nDim;
     form::vecX Nc;
     form::matX dNc;
-    form::elementShape(nDim, blk.nodesPerElement, form::vecX::Zero(nDim), Nc, dNc);
+    if (shells)
+    {
+        Nc = form::vecX::Constant(4, 0.25);     // the mid-surface's centre
+    }
+    else
+    {
+        form::elementShape
+        (
+            nDim, blk.nodesPerElement, form::vecX::Zero(nDim), Nc, dNc
+        );
+    }
     const vectorField& C = mesh_->C();
     forAll(C, celli)
     {
@@ -155,9 +180,28 @@ bool Foam::solidRegion::write()
         }
     }
 
+    // Shells: the current thickness, and the director frames for restarts
+    autoPtr<volScalarField> thickness;
+    if (shells)
+    {
+        thickness.reset
+        (
+            new volScalarField
+            (
+                io("thickness"), *mesh_, dimensionedScalar(dimLength, Zero)
+            )
+        );
+        forAll(C, celli)
+        {
+            (*thickness)[celli] =
+                blk.shell.thickness*results[celli].thicknessStretch;
+        }
+    }
+
     // Results at the case's writePrecision; the restart state at full
     // precision (a restart reproduces the run to round-off)
     bool ok = pointD.write();
+    if (thickness) ok = thickness->write() && ok;
     ok = D.write() && ok;
     ok = sigma.write() && ok;
     ok = sigmaEq.write() && ok;
@@ -181,6 +225,13 @@ bool Foam::solidRegion::write()
         IOField<scalar> released(io("feReleased"), scalarField(rl.size()));
         forAll(released, i) released[i] = rl[i];
         ok = released.write() && ok;
+    }
+    if (shells)
+    {
+        const std::vector<double> ss = model_->shellState();
+        IOField<scalar> shellState(io("shellState"), scalarField(ss.size()));
+        forAll(shellState, i) shellState[i] = ss[i];
+        ok = shellState.write() && ok;
     }
     ok = feU.write() && ok;
     IOstream::defaultPrecision(precision);
@@ -232,6 +283,34 @@ bool Foam::solidRegion::readState(const word& timeName)
         }
     }
     model_->setDisplacement(model_->U() + dU);
+
+    // Shells: the director frames (and with them the rotation unknowns)
+    if (model_->shells())
+    {
+        IOobject sio
+        (
+            "shellState", timeName, *mesh_,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        if (!sio.typeHeaderOk<IOField<scalar>>(true))
+        {
+            FatalErrorInFunction
+                << "Restart state of region '" << name_ << "' at time "
+                << timeName << " has no shell directors (shellState), which"
+                << " its shell elements need" << exit(FatalError);
+        }
+        IOField<scalar> ss(sio);
+        try
+        {
+            model_->setShellState(std::vector<double>(ss.begin(), ss.end()));
+        }
+        catch (const form::numericalError& e)
+        {
+            FatalErrorInFunction
+                << "Restart state " << ss.objectPath() << ": " << e.what()
+                << exit(FatalError);
+        }
+    }
 
     // Material history, if the material has one
     std::vector<std::vector<form::materialState>> states =
