@@ -10,12 +10,20 @@
 #   2. A restart of the geometrically nonlinear roof (the full weight,
 #      4 steps) from t = 0.5 ends where the uninterrupted run ends: the
 #      directors' frames come back from the restart state.
-#   3. Bad input stops with a message naming the file and the entry: a
+#   3. A square plate (side 2, L/t = 200, nu = 0.3) under a uniform
+#      pressure on its top face (a follower load, pushing down), quarter
+#      model with symmetry planes (tests/cases/shellPlate); SHELLS.md:
+#      the centre's deflection -1.267e-3 p (2L)^4/D clamped, -4.062e-3
+#      simply supported (Timoshenko, Kirchhoff plates): clamped 8 x 8 and
+#      16 x 16 within 2.5 % and 1 % (observed +2.0 %, +0.72 %), simply
+#      supported 16 x 16 within 1 % (+0.71 %; 32 x 32: +0.39 %, +0.23 %).
+#   4. Bad input stops with a message naming the file and the entry: a
 #      negative thickness, 7 points through it, a shell section for a
 #      solid element, shells in a 2D analysis, an oblique symmetry plane,
 #      a pressure on the sheet's edge, a sheet two cells thick.
 . "$(dirname "$0")/testFunctions"
 ref=-0.3024
+work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamShells.XXXXXX")
 
 run()   # run <case>: blockMesh + formFoam, logs in the case
 {
@@ -62,7 +70,24 @@ checkClose "roof restarted at 0.5: w as uninterrupted" \
     "$(summaryValue "$c" wFreeEdge)" "$full" 1e-9
 rm -rf "$c"
 
-# 3. Bad input
+# 3. Plates under pressure (the summary divides by p (2L)^4/D)
+c=$work/plate
+runCopy shellPlate "$c" plate || fail "clamped plate 8 x 8 run (see $c/log.formFoam)"
+checkClose "clamped plate 8 x 8: centre w / (p (2L)^4/D)" \
+    "$(summaryValue "$c" wCentre)" -1.267e-3 0.025
+runCopy shellPlate "$c" plate \
+    "sed -i 's/^n       8;/n       16;/' system/plate/blockMeshDict" \
+    || fail "clamped plate 16 x 16 run (see $c/log.formFoam)"
+checkClose "clamped plate 16 x 16: centre w / (p (2L)^4/D)" \
+    "$(summaryValue "$c" wCentre)" -1.267e-3 0.01
+runCopy shellPlate "$c" plate \
+    "sed -i 's/^n       8;/n       16;/' system/plate/blockMeshDict" \
+    "sed -i 's/{ type clamped; }/{ type fixedDisplacement; components (z); }/' 0/plate/D" \
+    || fail "simply supported plate run (see $c/log.formFoam)"
+checkClose "simply supported plate 16 x 16: centre w / (p (2L)^4/D)" \
+    "$(summaryValue "$c" wCentre)" -4.062e-3 0.01
+
+# 4. Bad input
 bad()   # bad <label> <regex> <edit>...: the edited roof must fail
 {
     local label=$1 regex=$2 d
@@ -88,3 +113,4 @@ bad "pressure on the sheet's edge" "freeEdge.*pressures act on the faces of the 
     "sed -i 's/freeEdge  { type free; }/freeEdge { type pressure; pressure 1; }/' 0/roof/D"
 bad "sheet two cells thick" "not meshed one cell thick|no two opposite faces" \
     "sed -i 's/(\$n \$n 1)/(\$n \$n 2)/' system/roof/blockMeshDict"
+rm -rf "$work"
