@@ -8,6 +8,7 @@ Description
     results and restart state: contactModelOutput.C.
 \*---------------------------------------------------------------------------*/
 #include "contactModelImpl.H"
+#include <map>
 #include "constraintFunctions.H"
 #include "solidElement.H"
 #include "formError.H"
@@ -338,6 +339,89 @@ void contactModel::addToUnknowns(const vecX& dx)
 }
 
 
+void contactModel::setShells(const shellSet* shells)
+{
+    impl& m = *impl_;
+    m.shells = shells;
+    for (std::size_t i = 0; i < m.pairs.size(); ++i)
+    {
+        impl::pairData& p = m.pairs[i];
+        const contactPairSpec& spec = m.pairSpecs[i];
+        p.offset.clear();
+        if (!shells || m.nDim != 3) continue;
+        bool anyShell = false, anySolid = false;
+        for (const int n : p.nodes)
+        {
+            (shells->shellNode(n) >= 0 ? anyShell : anySolid) = true;
+        }
+        if (!anyShell) continue;
+        if (anySolid)
+        {
+            throw inputError
+            (
+                spec.name + "/patch",
+                "pair '" + spec.name + "': patch '" + spec.faceSet
+              + "' has both shell and solid nodes"
+            );
+        }
+        if (p.tool < 0)
+        {
+            throw inputError
+            (
+                spec.name,
+                "pair '" + spec.name + "': shells touch rigid tools only"
+                " (contact of a shell with a deformable target is not"
+                " available yet)"
+            );
+        }
+        // The side of each node's director the patch covers: the patch's
+        // faces are the elements' mid-surface quadrilaterals ordered with
+        // the patch's outward normal
+        std::map<int, int> side;
+        for (const std::vector<int>& f : p.faces)
+        {
+            if (f.size() != 4)
+            {
+                throw inputError
+                (
+                    spec.name + "/patch",
+                    "pair '" + spec.name + "': patch '" + spec.faceSet
+                  + "' is an edge of the shell; contact acts on the faces"
+                    " of the sheet"
+                );
+            }
+            const auto X = [&](int k)
+            {
+                return vec3(m.mesh->X.row(f[k]).transpose());
+            };
+            const vec3 n = (X(2) - X(0)).cross(X(3) - X(1));
+            for (const int node : f)
+            {
+                const int s = n.dot(shells->initialDirector(node)) > 0 ? 1 : -1;
+                auto it = side.find(node);
+                if (it != side.end() && it->second != s)
+                {
+                    throw inputError
+                    (
+                        spec.name + "/patch",
+                        "pair '" + spec.name + "': patch '" + spec.faceSet
+                      + "' covers both faces of the sheet at node "
+                      + std::to_string(node)
+                    );
+                }
+                side[node] = s;
+            }
+        }
+        p.offset.resize(p.nodes.size());
+        for (std::size_t a = 0; a < p.nodes.size(); ++a)
+        {
+            const int node = p.nodes[a];
+            p.offset[a] = side[node]*0.5*shells->thickness(node);
+        }
+    }
+}
+
+
 // Quasi-static approach of a force-controlled tool that touches nothing:
 // translate it along e until the first contactor node ahead of it touches.
 // For a node with normal n and gap g, a move by dz along e closes the gap
@@ -354,13 +438,14 @@ void contactModel::impl::approach(int T, double t1, const vecX& U)
         for (const pairData& p : pairs)
         {
             if (p.tool != T) continue;
-            for (int node : p.nodes)
+            for (int a = 0; a < int(p.nodes.size()); ++a)
             {
+                const int node = p.nodes[a];
                 double gap, ne;
                 if (nDim == 3)
                 {
                     const surfaceProjection P =
-                        tool.surface->project(position3(node, U) - d);
+                        tool.surface->project(contactPoint(p, a, U) - d);
                     gap = P.gap;
                     ne = P.normal.dot(tool.direction);
                 }
@@ -702,7 +787,7 @@ std::vector<std::pair<int, double>> contactModel::releaseTool
             const int node = p.nodes[a];
             const surfaceProjection P = m.tools[T].surface->project
             (
-                m.position3(node, U) - m.translation(T, m.tCommitted)
+                m.contactPoint(p, int(a), U) - m.translation(T, m.tCommitted)
             );
             const int il = p.first + p.perNode*int(a);
             vec3 f = m.k*m.xCommitted(il)*P.normal;
@@ -714,6 +799,18 @@ std::vector<std::pair<int, double>> contactModel::releaseTool
             for (int i = 0; i < 3; ++i)
             {
                 forces.push_back({m.dofs.dof(node, i), f(i)});
+            }
+            if (!p.offset.empty())
+            {
+                // A shell node: the force's moment on its rotation dofs
+                const directorState D = m.shells->directorAt(node, m.dofs, U);
+                for (int j = 0; j < 2; ++j)
+                {
+                    forces.push_back
+                    (
+                        {m.dofs.dof(node, 3 + j), p.offset[a]*D.dV.col(j).dot(f)}
+                    );
+                }
             }
         }
         for (std::size_t a = 0; a < p.nodes.size() && m.nDim == 2; ++a)

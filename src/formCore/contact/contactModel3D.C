@@ -48,7 +48,7 @@ void contactModel::impl::initialise3D
     const vec3 d = translation(p.tool, t);
     for (std::size_t a = 0; a < p.nodes.size(); ++a)
     {
-        const vec3 y = position3(p.nodes[a], U) - d;
+        const vec3 y = contactPoint(p, int(a), U) - d;
         const surfaceProjection P = tools[p.tool].surface->project(y);
         p.cCommitted[a] = y - P.gap*P.normal;
         p.slip3[a] = vec3::Zero();
@@ -79,7 +79,7 @@ void contactModel::impl::commit3D(pairData& p, const vecX& U)
         }
         else
         {
-            const vec3 y = position3(p.nodes[a], U) - d;
+            const vec3 y = contactPoint(p, int(a), U) - d;
             P = tools[p.tool].surface->project(y);
             const vec3 c = y - P.gap*P.normal;
             p.slip3[a] = c - p.cCommitted[a];
@@ -118,11 +118,20 @@ void contactModel::impl::evaluateRigid3D
     const int T = p.tool;
     const rigidToolSpec& tool = tools[T];
     const vec3 d = translation(T, t);
+    if (p.offset.empty() && !p.nodes.empty() && dofs.count(p.nodes[0]) == 5)
+    {
+        throw numericalError
+        (
+            "contact: pair '" + pairSpecs[&p - pairs.data()].name
+          + "' has shell nodes, but the contact model was not given the"
+            " model's shells (contactModel::setShells)"
+        );
+    }
 
     for (int a = 0; a < int(p.nodes.size()); ++a)
     {
         const int node = p.nodes[a];
-        const vec3 y = position3(node, U) - d;
+        const vec3 y = contactPoint(p, a, U) - d;
         checkPosition(p, node, y);
         const surfaceProjection P = tool.surface->project(y);
         const vec3& n = P.normal;
@@ -152,6 +161,15 @@ void contactModel::impl::evaluateRigid3D
                 q.ds.row(0) = (rateA*F.t1.transpose()*dc + D.transpose()*F.dT1DY)/dt;
                 q.ds.row(1) = (rateA*F.t2.transpose()*dc + D.transpose()*F.dT2DY)/dt;
             }
+        }
+        if (!p.offset.empty())
+        {
+            // A shell node: the derivatives in y chained to its 5 dofs
+            shellContactor(p, a, U, q);
+            q.dGap = q.J.transpose()*q.dGap;
+            q.dn = q.dn*q.J;
+            for (matX& m : q.dt) m = m*q.J;
+            if (q.ds.size()) q.ds = q.ds*q.J;
         }
         assembleNode(p, a, q, dt, U, fext, r, K);
     }

@@ -24,6 +24,12 @@ Description
     A force-controlled rigid tool moves the node's projection with its
     unknown position z along e (y = x - z e): d/dz = -e . d/dy on every
     row, and its equation r_z = F - e . sum f adds the row e . df.
+    A shell contactor node touches with the point y = x + h V of one face
+    of the sheet (V its director, h = +-t/2): the kinds then give the
+    derivatives over its 5 dofs, with J = dy/dq = [I h dV/d(alpha, beta)],
+    and its rows carry the generalised forces J^T f and the tangent
+    J^T df/dq + sum_i f_i d2y_i/dq2 (h d2V: the force's moment about the
+    director's rotation axes changes as the director turns).
 \*---------------------------------------------------------------------------*/
 #include "contactModelImpl.H"
 #include "constraintFunctions.H"
@@ -79,6 +85,32 @@ contactModel::impl::frictionResult contactModel::impl::frictionLaw
 }
 
 
+void contactModel::impl::shellContactor
+(
+    const pairData& p,
+    int a,
+    const vecX& U,
+    nodeTarget& q
+) const
+{
+    const int node = p.nodes[a];
+    const double h = p.offset[a];
+    const directorState D = shells->directorAt(node, dofs, U);
+    q.dofs.clear();
+    for (int i = 0; i < 5; ++i) q.dofs.push_back(dofs.dof(node, i));
+    q.J = matX::Zero(3, 5);
+    q.J.leftCols(3).setIdentity();
+    q.J.rightCols(2) = h*D.dV;
+    q.d2y.assign(3, matX::Zero(5, 5));
+    for (int i = 0; i < 3; ++i)
+    {
+        q.d2y[i](3, 3) = h*D.d2V[0](i);
+        q.d2y[i](3, 4) = q.d2y[i](4, 3) = h*D.d2V[1](i);
+        q.d2y[i](4, 4) = h*D.d2V[2](i);
+    }
+}
+
+
 void contactModel::impl::assembleNode
 (
     pairData& p,
@@ -95,21 +127,40 @@ void contactModel::impl::assembleNode
     const int d = nDim;
     const int nt = p.perNode - 1;
     const int nq = int(q.dofs.size());
-    const int nb = nq/d;
+    // The contactor's dofs (nc) and its map J; then the target nodes
+    const bool mapped = q.J.size() > 0;
+    const int nc = mapped ? int(q.J.cols()) : d;
+    const int nb = 1 + (nq - nc)/d;
     const int il = p.first + p.perNode*a;
     const double lambda = x(il);
     const vecX tau = x.segment(il + 1, nt);
     const normalConstraint c = normalConstraintFunction(q.gap, lambda, epsN);
+    // Block b's first row in q
+    const auto first = [nc, d](int b) { return b == 0 ? 0 : nc + d*(b - 1); };
+    // A force on the contact point as generalised forces on the
+    // contactor's dofs (J^T v)
+    const auto toContactor = [&](const vecX& v) -> vecX
+    {
+        return mapped ? vecX(q.J.transpose()*v) : v;
+    };
 
     vecX ft = vecX::Zero(d);
     for (int al = 0; al < nt; ++al) ft += k*tau(al)*q.t.col(al);
     const vecX f = k*lambda*q.n + ft;
-    for (int b = 0; b < nb; ++b)
+    {
+        const vecX fc = toContactor(f), ftc = toContactor(ft);
+        for (int i = 0; i < nc; ++i)
+        {
+            fext(q.dofs[i]) += fc(i);
+            friction(q.dofs[i]) += ftc(i);
+        }
+    }
+    for (int b = 1; b < nb; ++b)
     {
         for (int i = 0; i < d; ++i)
         {
-            fext(q.dofs[d*b + i]) += q.weight[b]*f(i);
-            friction(q.dofs[d*b + i]) += q.weight[b]*ft(i);
+            fext(q.dofs[first(b) + i]) += q.weight[b]*f(i);
+            friction(q.dofs[first(b) + i]) += q.weight[b]*ft(i);
         }
     }
     if (q.tool >= 0) toolForce[q.tool].head(d) += f;
@@ -128,26 +179,43 @@ void contactModel::impl::assembleNode
         K->emplace_back(i, j, v);
     };
 
-    // dF/dq
+    // dF/dq: the contactor's rows J^T df + sum_i f_i d2y_i, the target
+    // nodes' w_b df + f dw_b
     matX df = k*lambda*q.dn;
     for (int al = 0; al < nt; ++al) df += k*tau(al)*q.dt[al];
     matX dF(nq, nq);
-    for (int b = 0; b < nb; ++b)
+    dF.topRows(nc) = mapped ? matX(q.J.transpose()*df) : df;
+    for (std::size_t i = 0; i < q.d2y.size(); ++i)
     {
-        dF.middleRows(d*b, d) = q.weight[b]*df;
-        if (b > 0) dF.middleRows(d*b, d) += f*q.dWeight.row(b - 1);
+        dF.topLeftCorner(nc, nc) += f(i)*q.d2y[i];
     }
+    for (int b = 1; b < nb; ++b)
+    {
+        dF.middleRows(first(b), d) =
+            q.weight[b]*df + f*q.dWeight.row(b - 1);
+    }
+    // The force's directions on the contactor's rows: J^T n, J^T t_a
+    matX dirs(d, 1 + nt);
+    dirs.col(0) = q.n;
+    for (int al = 0; al < nt; ++al) dirs.col(1 + al) = q.t.col(al);
+    if (mapped) dirs = q.J.transpose()*dirs;
     const matX Ktq = nt > 0 ? matX(-k*fc.dvds*q.ds) : matX();
     for (int i = 0; i < nq; ++i)
     {
         const int di = q.dofs[i];
-        const double w = q.weight[i/d];
         for (int j = 0; j < nq; ++j) add(di, q.dofs[j], -dF(i, j));
-        add(di, N + il, -w*k*q.n(i % d));
+        // on the target nodes' rows: w_b n, w_b t_a
+        const double w = i < nc ? 1.0 : q.weight[1 + (i - nc)/d];
+        const int ii = (i - nc) % d;
+        add(di, N + il, i < nc ? -k*dirs(i, 0) : -w*k*q.n(ii));
         add(N + il, di, -k*c.dwdg*q.dGap(i));
         for (int al = 0; al < nt; ++al)
         {
-            add(di, N + il + 1 + al, -w*k*q.t(i % d, al));
+            add
+            (
+                di, N + il + 1 + al,
+                i < nc ? -k*dirs(i, 1 + al) : -w*k*q.t(ii, al)
+            );
             add(N + il + 1 + al, di, Ktq(al, i));
         }
     }
@@ -163,20 +231,24 @@ void contactModel::impl::assembleNode
 
     const int iz = q.tool >= 0 ? toolUnknown[q.tool] : -1;
     if (iz < 0) return;
-    // Force-controlled tool: d/dz = -e . d/dy over the node's block (a
-    // rigid tool's q is the node alone)
+    // Force-controlled tool: the contact point in the tool's frame is
+    // y = x(q) - z e, and the derivatives in y are those in the
+    // contactor's translations (the first d columns of q, where dy/dq is
+    // the identity): d/dz = -e . d/dy (a rigid tool's q is the contactor
+    // alone)
     const vecX e = tools[q.tool].direction.head(d);
-    const vecX dfe = df*e;
-    for (int i = 0; i < d; ++i)
+    const vecX dfe = df.leftCols(d)*e;
+    const vecX dFe = mapped ? vecX(q.J.transpose()*dfe) : dfe;
+    for (int i = 0; i < nc; ++i)
     {
-        add(q.dofs[i], N + iz, dfe(i));
+        add(q.dofs[i], N + iz, dFe(i));
         add(N + iz, q.dofs[i], e.dot(df.col(i)));
     }
-    add(N + il, N + iz, k*c.dwdg*q.dGap.dot(e));
+    add(N + il, N + iz, k*c.dwdg*q.dGap.head(d).dot(e));
     add(N + iz, N + il, k*e.dot(q.n));
     for (int al = 0; al < nt; ++al)
     {
-        add(N + il + 1 + al, N + iz, -Ktq.row(al).dot(e));
+        add(N + il + 1 + al, N + iz, -Ktq.row(al).head(d).dot(e));
         add(N + iz, N + il + 1 + al, k*e.dot(q.t.col(al)));
     }
     add(N + iz, N + iz, -e.dot(dfe));

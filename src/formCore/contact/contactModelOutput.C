@@ -64,7 +64,7 @@ std::vector<contactNodeResult> contactModel::pairResults
     {
         contactNodeResult res;
         res.node = p.nodes[a];
-        res.x = m.position3(res.node, U);
+        res.x = m.nDim == 3 ? m.contactPoint(p, int(a), U) : m.position3(res.node, U);
         const int il = p.first + p.perNode*int(a);
         const double lambda = p.active ? m.x(il) : 0.0;
         double tau = p.active && p.perNode == 2 ? m.x(il + 1) : 0.0;

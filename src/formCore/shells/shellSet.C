@@ -128,6 +128,7 @@ shellSet::shellSet
             {
                 shellNode_[n] = int(nodeOf_.size());
                 nodeOf_.push_back(n);
+                thickness_.push_back(blk.shell.thickness);
             }
         }
     }
@@ -325,6 +326,19 @@ elementResult shellSet::result
     }
     r.pressure = -r.cauchy.trace()/3;
     return r;
+}
+
+
+directorState shellSet::directorAt
+(
+    int node,
+    const dofMap& dofs,
+    const vecX& U
+) const
+{
+    const int s = shellNode_[node];
+    const Eigen::Vector2d d = increment(s, dofs, U);
+    return frames_[s].at(d(0), d(1));
 }
 
 

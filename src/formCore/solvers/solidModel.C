@@ -626,7 +626,11 @@ void solidModel::setContact(std::shared_ptr<contactModel> contact)
         );
     }
     m.contact = std::move(contact);
-    if (m.contact) m.coupled.insert(m.coupled.begin(), m.contact);
+    if (m.contact)
+    {
+        m.contact->setShells(m.shells.get());
+        m.coupled.insert(m.coupled.begin(), m.contact);
+    }
     ++m.revision;
 }
 
