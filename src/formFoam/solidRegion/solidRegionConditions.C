@@ -296,22 +296,34 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
                 << ")" << exit(FatalIOError);
         }
         model_->addConstraint(nodes, c);
-        const std::vector<int> shellNodes = shellNodesOf(nodes);
-        if (!shellNodes.empty())
+        // Shell nodes: the frame's V1 along n, beta (the rotation about
+        // the other tangent axis) held; a node on two symmetry planes
+        // (a corner) turns about neither normal: both rotations held
+        std::vector<int> align, corner;
+        for (const int node : shellNodesOf(nodes))
         {
-            try
+            const auto it = symmetryNormal_.find(node);
+            if (it == symmetryNormal_.end())
             {
-                model_->alignShellFrames
-                (
-                    shellNodes, form::vec3(n.x(), n.y(), n.z())
-                );
+                symmetryNormal_[node] = c;
+                align.push_back(node);
             }
-            catch (const form::inputError& err)
+            else if (it->second != c)
             {
-                fatalInput(pd, err);
+                corner.push_back(node);
             }
-            model_->addConstraint(shellNodes, 4);
         }
+        try
+        {
+            model_->alignShellFrames(align, form::vec3(n.x(), n.y(), n.z()));
+        }
+        catch (const form::inputError& err)
+        {
+            fatalInput(pd, err);
+        }
+        model_->addConstraint(align, 4);
+        model_->addConstraint(corner, 3);
+        model_->addConstraint(corner, 4);
     }
     else if (type == "traction")
     {
