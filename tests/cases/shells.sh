@@ -26,7 +26,7 @@
 #      theory's 24 D b w/L^3 = 0.43956 within 0.2 % (observed -0.024 %),
 #      and the support's reaction balances it.
 #   5. Bad input stops with a message naming the file and the entry: a
-#      negative thickness, 7 points through it, a shell section for a
+#      negative thickness, 11 points through it, 2 Lobatto points, a shell section for a
 #      solid element, shells in a 2D analysis, an oblique symmetry plane,
 #      a pressure on the sheet's edge, a sheet two cells thick.
 . "$(dirname "$0")/testFunctions"
@@ -123,8 +123,10 @@ bad()   # bad <label> <regex> <edit>...: the edited roof must fail
 }
 bad "negative thickness" "shell/thickness.*not a positive thickness" \
     "sed -i 's/thicknessPoints 2;/thicknessPoints 2; thickness -0.25;/' constant/roof/solidProperties"
-bad "7 points through the thickness" "shell/thicknessPoints.*valid: 1 to 5" \
-    "sed -i 's/thicknessPoints 2;/thicknessPoints 7;/' constant/roof/solidProperties"
+bad "11 points through the thickness" "shell/thicknessPoints.*valid: 1 to 10" \
+    "sed -i 's/thicknessPoints 2;/thicknessPoints 11;/' constant/roof/solidProperties"
+bad "2 Lobatto points" "shell/thicknessPoints.*valid: 3 to 10" \
+    "sed -i 's/thicknessPoints 2;/thicknessPoints 2; thicknessRule Lobatto;/' constant/roof/solidProperties"
 bad "shell section for a solid element" "a shell section, but elementType Hex8" \
     "sed -i 's/^elementType .*/elementType     Hex8;/' constant/roof/solidProperties"
 bad "shells in a 2D analysis" "need analysisType solid3D" \

@@ -3,8 +3,8 @@
 -------------------------------------------------------------------------------
 Description
     Implementation of gaussLegendre.H: Gauss-Legendre quadrature on [-1, 1]
-    with n = 1..5 points (exact for polynomials of degree 2n - 1) and its
-    tensor product on [-1, 1]^2.
+    with n = 1..10 points (exact for polynomials of degree 2n - 1), its
+    tensor products, and Gauss-Lobatto quadrature with n = 2..10 points.
 \*---------------------------------------------------------------------------*/
 #include "gaussLegendre.H"
 #include <cmath>
@@ -12,6 +12,32 @@ Description
 
 namespace form
 {
+
+namespace
+{
+
+//- P_n(z) and P_n'(z) by the three-term recurrence
+void legendre(int n, double z, double& P, double& dP)
+{
+    double p0 = 1, p1 = z;
+    if (n == 0)
+    {
+        P = 1;
+        dP = 0;
+        return;
+    }
+    for (int k = 2; k <= n; ++k)
+    {
+        const double p2 = ((2*k - 1)*z*p1 - (k - 1)*p0)/k;
+        p0 = p1;
+        p1 = p2;
+    }
+    P = p1;
+    dP = n*(z*p1 - p0)/(z*z - 1);
+}
+
+} // anonymous namespace
+
 
 void gaussLegendre1D(int n, std::vector<double>& x, std::vector<double>& w)
 {
@@ -57,11 +83,72 @@ void gaussLegendre1D(int n, std::vector<double>& x, std::vector<double>& w)
             break;
         }
         default:
-            throw std::invalid_argument
-            (
-                "gaussLegendre1D: " + std::to_string(n)
-              + " points requested; available 1..5"
-            );
+        {
+            if (n < 1 || n > 10)
+            {
+                throw std::invalid_argument
+                (
+                    "gaussLegendre1D: " + std::to_string(n)
+                  + " points requested; available 1..10"
+                );
+            }
+            x.assign(n, 0);
+            w.assign(n, 0);
+            for (int i = 0; i < n; ++i)
+            {
+                // the i-th root from the top, by Newton's method
+                double z = std::cos(M_PI*(i + 0.75)/(n + 0.5));
+                double P, dP;
+                for (int it = 0; it < 100; ++it)
+                {
+                    legendre(n, z, P, dP);
+                    const double dz = P/dP;
+                    z -= dz;
+                    if (std::abs(dz) < 1e-16) break;
+                }
+                legendre(n, z, P, dP);
+                x[n - 1 - i] = z;
+                w[n - 1 - i] = 2/((1 - z*z)*dP*dP);
+            }
+        }
+    }
+}
+
+
+void gaussLobatto1D(int n, std::vector<double>& x, std::vector<double>& w)
+{
+    if (n < 2 || n > 10)
+    {
+        throw std::invalid_argument
+        (
+            "gaussLobatto1D: " + std::to_string(n)
+          + " points requested; available 2..10"
+        );
+    }
+    x.assign(n, 0);
+    w.assign(n, 0);
+    x[0] = -1;
+    x[n - 1] = 1;
+    w[0] = w[n - 1] = 2.0/(n*(n - 1));
+    // Interior points: the roots of P'_{n-1}, which lie between those of
+    // P_{n-1}; Newton on P'_{n-1} with P''_{n-1} from Legendre's equation
+    // (1 - z^2) P'' = 2 z P' - m (m + 1) P, m = n - 1
+    const int m = n - 1;
+    for (int i = 1; i < n - 1; ++i)
+    {
+        double z = std::cos(M_PI*i/m);     // Chebyshev-Lobatto guess
+        double P, dP;
+        for (int it = 0; it < 100; ++it)
+        {
+            legendre(m, z, P, dP);
+            const double d2P = (2*z*dP - m*(m + 1)*P)/(1 - z*z);
+            const double dz = dP/d2P;
+            z -= dz;
+            if (std::abs(dz) < 1e-16) break;
+        }
+        legendre(m, z, P, dP);
+        x[n - 1 - i] = z;
+        w[n - 1 - i] = 2/(n*(n - 1)*P*P);
     }
 }
 

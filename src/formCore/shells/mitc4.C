@@ -20,7 +20,8 @@ mitc4::mitc4
     const Eigen::Matrix<double, 4, 3>& V0,
     const Eigen::Vector4d& a,
     std::shared_ptr<const shellLaw> law,
-    int nThickness
+    int nThickness,
+    bool lobatto
 )
 :
     X_(X),
@@ -37,10 +38,17 @@ mitc4::mitc4
     {
         throw numericalError("mitc4: thicknesses must be positive");
     }
-    if (nThickness < 1 || nThickness > 5)
+    if (lobatto ? nThickness < 3 || nThickness > 10 : nThickness < 1 || nThickness > 10)
     {
-        throw numericalError("mitc4: 1 to 5 points through the thickness");
+        throw numericalError
+        (
+            lobatto
+          ? "mitc4: 3 to 10 Gauss-Lobatto points through the thickness"
+          : "mitc4: 1 to 10 Gauss points through the thickness"
+        );
     }
+    if (lobatto) gaussLobatto1D(nThickness, zt_, wt_);
+    else gaussLegendre1D(nThickness, zt_, wt_);
 }
 
 
@@ -50,10 +58,11 @@ mitc4::mitc4
     const Eigen::Matrix<double, 4, 3>& V0,
     const Eigen::Vector4d& a,
     const shellElastic& law,
-    int nThickness
+    int nThickness,
+    bool lobatto
 )
 :
-    mitc4(X, V0, a, std::make_shared<shellElastic>(law), nThickness)
+    mitc4(X, V0, a, std::make_shared<shellElastic>(law), nThickness, lobatto)
 {}
 
 
@@ -261,8 +270,8 @@ bool mitc4::integrate
     if (f) f->setZero();
     if (K) K->setZero();
     if (W) *W = 0;
-    std::vector<double> zt, wt;
-    gaussLegendre1D(nThickness_, zt, wt);
+    const std::vector<double>& zt = zt_;
+    const std::vector<double>& wt = wt_;
     const double g = 1/std::sqrt(3.0);
     const double pts[2] = {-g, g};
     const materialState none;
@@ -378,8 +387,8 @@ void mitc4::pointStrains
 {
     Q.resize(nQuadrature());
     eps.resize(nQuadrature());
-    std::vector<double> zt, wt;
-    gaussLegendre1D(nThickness_, zt, wt);
+    const std::vector<double>& zt = zt_;
+    const std::vector<double>& wt = wt_;
     const double g = 1/std::sqrt(3.0);
     const double pts[2] = {-g, g};
     mat5 T;

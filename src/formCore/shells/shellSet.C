@@ -100,12 +100,15 @@ shellSet::shellSet
               + formatNumber(blk.shell.thickness)
             );
         }
-        if (blk.shell.points < 1 || blk.shell.points > 5)
+        const int minPoints = blk.shell.lobatto ? 3 : 1;
+        if (blk.shell.points < minPoints || blk.shell.points > 10)
         {
             throw inputError
             (
                 "thicknessPoints",
-                where + ": 1 to 5 Gauss points through the thickness, not "
+                where + ": " + std::to_string(minPoints) + " to 10 "
+              + (blk.shell.lobatto ? "Gauss-Lobatto" : "Gauss")
+              + " points through the thickness, not "
               + std::to_string(blk.shell.points)
             );
         }
@@ -239,7 +242,7 @@ shellSet::shellSet
             elements_[b].emplace_back
             (
                 X, V0, Eigen::Vector4d::Constant(blk.shell.thickness), law,
-                blk.shell.points
+                blk.shell.points, blk.shell.lobatto
             );
         }
     }

@@ -300,7 +300,9 @@ void Foam::polyMeshToFeMesh::buildShell
         << elementType << " shell elements on the mid-surface of the sheet,"
         << " thickness " << block.shell.thickness
         << (section.thickness > 0 ? " (solidProperties)" : " (mesh)")
-        << ", " << block.shell.points << " Gauss points through it" << endl;
+        << ", " << block.shell.points
+        << (block.shell.lobatto ? " Gauss-Lobatto" : " Gauss")
+        << " points through it" << endl;
 
     fe_.X.resize(X.size(), 3);
     forAll(X, i) fe_.X.row(i) = X[i].transpose();

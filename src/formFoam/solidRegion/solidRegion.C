@@ -368,7 +368,10 @@ form::shellSection Foam::solidRegion::readShellSection() const
     (
         properties_, "shell", "{ thickness 1e-3; thicknessPoints 5; }"
     );
-    checkKeywords(sd, {"thickness", "thicknessPoints", "shearCorrection"});
+    checkKeywords
+    (
+        sd, {"thickness", "thicknessPoints", "thicknessRule", "shearCorrection"}
+    );
     if (sd.found("thickness"))
     {
         section.thickness = sd.get<scalar>("thickness");
@@ -380,13 +383,23 @@ form::shellSection Foam::solidRegion::readShellSection() const
                 << exit(FatalIOError);
         }
     }
+    const word rule = sd.getOrDefault<word>("thicknessRule", "Gauss");
+    if (rule != "Gauss" && rule != "Lobatto")
+    {
+        FatalIOErrorInFunction(sd)
+            << "Entry 'shell/thicknessRule' in " << file << ": unknown '"
+            << rule << "'; valid: Gauss Lobatto" << exit(FatalIOError);
+    }
+    section.lobatto = rule == "Lobatto";
     section.points = sd.getOrDefault<label>("thicknessPoints", section.points);
-    if (section.points < 1 || section.points > 5)
+    const label minPoints = section.lobatto ? 3 : 1;
+    if (section.points < minPoints || section.points > 10)
     {
         FatalIOErrorInFunction(sd)
             << "Entry 'shell/thicknessPoints' in " << file << ": "
-            << section.points << " Gauss points through the thickness;"
-            << " valid: 1 to 5" << exit(FatalIOError);
+            << section.points << " " << rule << " points through the"
+            << " thickness; valid: " << minPoints << " to 10"
+            << exit(FatalIOError);
     }
     section.shearCorrection =
         sd.getOrDefault<scalar>("shearCorrection", section.shearCorrection);

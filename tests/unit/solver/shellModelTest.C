@@ -14,8 +14,8 @@
 //     moment-curvature relation of the section integrated by the 5 Gauss
 //     points through the thickness, up to 2/sqrt(3) x 0.9448 of the
 //     plastic moment;
-//   - input errors: a fold (two elements at 90 deg), a zero thickness, a
-//     2D mesh, a rotation constraint on a solid node, a shell node without
+//   - input errors: a fold (two elements at 90 deg), a zero thickness, 11
+//     points through it, a 2D mesh, a rotation constraint on a solid node, a shell node without
 //     5 dofs.
 #include "staticSolver.H"
 #include "shellSet.H"
@@ -282,9 +282,11 @@ TEST(shellModel, plasticPlateStripInCylindricalBending)
     const double Mp = b*h*h*sy/4;
     // The largest relative deviation from the section's M(k) over the
     // loading with n elements along the strip; the final M / M_p
-    const auto run = [&](int n, double& Mend)
+    const auto run = [&](int n, double& Mend, bool lobatto = false)
     {
-        solidModel model(strip(n, L, b, h), analysisType::solid3D, mats);
+        feMesh mesh = strip(n, L, b, h);
+        mesh.blocks[0].shell.lobatto = lobatto;
+        solidModel model(mesh, analysisType::solid3D, mats);
         clamp(model);
         std::vector<int> all(model.mesh().nNodes());
         for (int n = 0; n < model.mesh().nNodes(); ++n) all[n] = n;
@@ -299,7 +301,8 @@ TEST(shellModel, plasticPlateStripInCylindricalBending)
         // The reference section: the material at the 5 points
         const planeStressMaterial law(mats["sheet"]);
         std::vector<double> zq, wq;
-        gaussLegendre1D(5, zq, wq);
+        if (lobatto) gaussLobatto1D(5, zq, wq);
+        else gaussLegendre1D(5, zq, wq);
         std::vector<materialState> points(5, law.initialState());
         const auto sectionMoment = [&](double k)
         {
@@ -336,9 +339,9 @@ TEST(shellModel, plasticPlateStripInCylindricalBending)
         );
         std::printf
         (
-            "    plastic plate strip, %d elements: end moment %.5f M_p (section"
+            "    plastic plate strip, %d elements%s: end moment %.5f M_p (section"
             " %.5f); largest deviation from the section's M(k) %.2e\n",
-            n, M/Mp, Mref/Mp, worst
+            n, lobatto ? " (Lobatto)" : "", M/Mp, Mref/Mp, worst
         );
         Mend = M;
         return worst;
@@ -352,6 +355,10 @@ TEST(shellModel, plasticPlateStripInCylindricalBending)
     EXPECT_LT(e8, 2e-2);
     EXPECT_LT(e16, 5e-3);
     EXPECT_GT(e8/e16, 3.5);
+    // The Gauss-Lobatto points through the thickness (the surfaces
+    // yield first): the same agreement with their own section
+    double M16L;
+    EXPECT_LT(run(16, M16L, true), 5e-3);
     // Well into the plastic range: beyond the perfectly plastic limit
     EXPECT_GT(M16/Mp, 2/std::sqrt(3.0)*0.94485);
 }
@@ -393,7 +400,7 @@ TEST(shellModel, inputErrorsNameTheirEntry)
             "thickness"
         );
         mesh.blocks[0].shell.thickness = 0.1;
-        mesh.blocks[0].shell.points = 7;
+        mesh.blocks[0].shell.points = 11;
         expectInput
         (
             [&] { solidModel(mesh, analysisType::solid3D, elastic(1, 0)); },
