@@ -345,6 +345,47 @@ directorState shellSet::directorAt
 }
 
 
+matX shellSet::massMatrix
+(
+    int block,
+    int element,
+    double rho,
+    bool lumped
+) const
+{
+    const mitc4& el = elements_[block][element];
+    const double t = thickness_[shellNode_[connectivity_[block][4*element]]];
+    Eigen::Matrix<double, 4, 3> X;
+    for (int k = 0; k < 4; ++k) X.row(k) = el.referencePoint(k).transpose();
+    const double g = 1/std::sqrt(3.0);
+    Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
+    for (const double r : {-g, g})
+    {
+        for (const double s : {-g, g})
+        {
+            quadShape<4>::vecN N;
+            quadShape<4>::matN2 dN;
+            quadShape<4>::eval(r, s, N, dN);
+            const vec3 Xr = X.transpose()*dN.col(0);
+            const vec3 Xs = X.transpose()*dN.col(1);
+            m += N*N.transpose()*Xr.cross(Xs).norm();
+        }
+    }
+    matX M = matX::Zero(20, 20);
+    for (int a = 0; a < 4; ++a)
+    {
+        const double area = m.row(a).sum();      // int N_a dA
+        for (int b = 0; b < 4; ++b)
+        {
+            const double mab = lumped ? (a == b ? area : 0.0) : m(a, b);
+            for (int i = 0; i < 3; ++i) M(5*a + i, 5*b + i) = rho*t*mab;
+        }
+        M(5*a + 3, 5*a + 3) = M(5*a + 4, 5*a + 4) = rho*t*t*t/12*area;
+    }
+    return M;
+}
+
+
 vec3 shellSet::director(int node, const dofMap& dofs, const vecX& U) const
 {
     const int s = shellNode_[node];

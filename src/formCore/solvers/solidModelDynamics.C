@@ -24,15 +24,6 @@ void solidModel::setInertia
 )
 {
     impl& m = *impl_;
-    if (m.shells)
-    {
-        throw inputError
-        (
-            "rho",
-            "shell elements carry no mass matrix yet (issue 22): no dynamic analysis"
-            " with shells"
-        );
-    }
     m.requireFinalised("setInertia");
     const int nElements = int(m.elemBlock.size());
     m.Me.assign(nElements, matX());
@@ -61,22 +52,34 @@ void solidModel::setInertia
                 " positive, got " + std::to_string(it->second)
             );
         }
-        m.gather(e, X, u);
-        matX Me = it->second*b.kernel->massMatrix(X);
-        if (lumped)
+        matX Me;
+        if (b.kernel)
         {
-            const vecX rowSum = Me.rowwise().sum();
-            Me = rowSum.asDiagonal();
+            m.gather(e, X, u);
+            Me = it->second*b.kernel->massMatrix(X);
+            if (lumped)
+            {
+                const vecX rowSum = Me.rowwise().sum();
+                Me = rowSum.asDiagonal();
+            }
+        }
+        else
+        {
+            Me = m.shells->massMatrix
+            (
+                m.elemBlock[e], m.elemLocal[e], it->second, lumped
+            );
         }
         const int* nodes = blk.nodes(m.elemLocal[e]);
-        const int n = blk.nodesPerElement*m.nDim;
+        const int nd = b.nodeDofs;
+        const int n = blk.nodesPerElement*nd;
         for (int p = 0; p < n; ++p)
         {
-            const int gp = m.dofs.dof(nodes[p/m.nDim], p%m.nDim);
+            const int gp = m.dofs.dof(nodes[p/nd], p%nd);
             for (int q = 0; q < n; ++q)
             {
                 if (Me(p, q) == 0) continue;
-                const int gq = m.dofs.dof(nodes[q/m.nDim], q%m.nDim);
+                const int gq = m.dofs.dof(nodes[q/nd], q%nd);
                 entries.emplace_back(gp, gq, Me(p, q));
             }
         }

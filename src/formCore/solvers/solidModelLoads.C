@@ -26,7 +26,8 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
         const vec3 g = inPlane(bodyForce(t), "bodyForce");
         for (int k = 0; k < bodyWeights.size(); ++k)
         {
-            fext(k) += bodyWeights(k)*g(dofs.component(k));
+            const int c = dofs.component(k);   // shells: 3, 4 rotations
+            if (c < 3) fext(k) += bodyWeights(k)*g(c);
         }
     }
     for (const auto& l : nodalLoads) fext(l.first) += l.second(t);
@@ -323,15 +324,6 @@ void solidModel::releaseConstraint(const std::vector<int>& nodes, int component)
 void solidModel::setBodyForce(double rho, vectorTimeFunction g)
 {
     impl& m = *impl_;
-    if (m.shells)
-    {
-        throw inputError
-        (
-            "bodyForce",
-            "shell elements carry no mass matrix yet (issue 22): no body force"
-            " with shells"
-        );
-    }
     m.requireFinalised("setBodyForce");
     if (!(rho > 0) || !std::isfinite(rho))
     {
@@ -347,12 +339,27 @@ void solidModel::setBodyForce(double rho, vectorTimeFunction g)
     {
         const impl::blockData& b = m.blocks[m.elemBlock[e]];
         const elementBlock& blk = m.mesh.blocks[m.elemBlock[e]];
-        m.gather(e, X, u);
-        const vecX rowSum = rho*b.kernel->massMatrix(X).rowwise().sum();
+        vecX rowSum;
+        if (b.kernel)
+        {
+            m.gather(e, X, u);
+            rowSum = rho*b.kernel->massMatrix(X).rowwise().sum();
+        }
+        else
+        {
+            // shells: the translations' masses (the rotations carry no
+            // weight)
+            rowSum = m.shells->massMatrix
+            (
+                m.elemBlock[e], m.elemLocal[e], rho, true
+            ).diagonal();
+            for (int a = 0; a < 4; ++a) rowSum(5*a + 3) = rowSum(5*a + 4) = 0;
+        }
         const int* nodes = blk.nodes(m.elemLocal[e]);
+        const int nd = b.nodeDofs;
         for (int p = 0; p < rowSum.size(); ++p)
         {
-            m.bodyWeights(m.dofs.dof(nodes[p/m.nDim], p%m.nDim)) += rowSum(p);
+            m.bodyWeights(m.dofs.dof(nodes[p/nd], p%nd)) += rowSum(p);
         }
     }
     m.bodyForce = std::move(g);
