@@ -153,20 +153,7 @@ void checkTangent
         U(3*a + 1) = -0.03*mesh.X(a, 2) + 0.002*u(gen);
         U(3*a + 2) = 0.004*u(gen) + 0.001;
     }
-    if (bathe)
-    {
-        cm.beginIncrement(0, 0.25, vecX::Zero(N));
-        vecX fext = vecX::Zero(N), r;
-        const vecX Um = 0.5*U;
-        cm.evaluate(0.25, Um, fext, r, nullptr);
-        cm.commit(Um);
-        cm.setSlipRateLaw(1.5, -0.5);
-    }
-    else
-    {
-        cm.beginIncrement(0, 0.5, vecX::Zero(N));
-        cm.commit(vecX::Zero(N));
-    }
+    test::commitStart(cm, U, bathe);
     vecX x(nC);
     for (int j = 0; j < nC; ++j) x(j) = 2e-3*u(gen);
     cm.addToUnknowns(x - cm.unknowns());

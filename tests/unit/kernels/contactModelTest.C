@@ -256,21 +256,7 @@ void checkTangent
         U(2*a) = 0.05*s.mesh.X(a, 1) + 0.002*u(gen);
         U(2*a + 1) = 0.004*u(gen) + 0.001;
     }
-    if (bathe)
-    {
-        // First stage to t = 0.25: half the shear
-        cm.beginIncrement(0, 0.25, vecX::Zero(N));
-        vecX fext = vecX::Zero(N), r;
-        const vecX Um = 0.5*U;
-        cm.evaluate(0.25, Um, fext, r, nullptr);
-        cm.commit(Um);
-        cm.setSlipRateLaw(1.5, -0.5);
-    }
-    else
-    {
-        cm.beginIncrement(0, 0.5, vecX::Zero(N));
-        cm.commit(vecX::Zero(N));
-    }
+    test::commitStart(cm, U, bathe);
     vecX x(nC);
     for (int j = 0; j < nC; ++j) x(j) = 2e-3*u(gen);
     cm.addToUnknowns(x - cm.unknowns());

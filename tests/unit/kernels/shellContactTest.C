@@ -146,20 +146,7 @@ void checkTangent
         U(dofs.dof(a, 3)) = 0.3*u(gen);
         U(dofs.dof(a, 4)) = 0.3*u(gen);
     }
-    if (bathe)
-    {
-        cm.beginIncrement(0, 0.25, vecX::Zero(N));
-        vecX fext = vecX::Zero(N), r;
-        const vecX Um = 0.5*U;
-        cm.evaluate(0.25, Um, fext, r, nullptr);
-        cm.commit(Um);
-        cm.setSlipRateLaw(1.5, -0.5);
-    }
-    else
-    {
-        cm.beginIncrement(0, 0.5, vecX::Zero(N));
-        cm.commit(vecX::Zero(N));
-    }
+    test::commitStart(cm, U, bathe);
     test::setTestMultipliers(cm, friction > 0 ? 3 : 1, gen);
 
     vecX R0;
