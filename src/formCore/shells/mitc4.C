@@ -21,14 +21,17 @@ mitc4::mitc4
     const Eigen::Vector4d& a,
     std::shared_ptr<const shellLaw> law,
     int nThickness,
-    bool lobatto
+    bool lobatto,
+    bool plus
 )
 :
     X_(X),
     V0_(V0),
     a_(a),
     law_(std::move(law)),
-    nThickness_(nThickness)
+    nThickness_(nThickness),
+    plus_(plus),
+    aTie_(Eigen::Matrix<double, 5, 1>::Zero())
 {
     if (!law_)
     {
@@ -49,6 +52,37 @@ mitc4::mitc4
     }
     if (lobatto) gaussLobatto1D(nThickness, zt_, wt_);
     else gaussLegendre1D(nThickness, zt_, wt_);
+    if (!plus_) return;
+
+    // MITC4+ geometric coefficients (mitc4.H) from the initial mid-surface
+    quadShape<4>::vecN N;
+    quadShape<4>::matN2 dN;
+    quadShape<4>::eval(0, 0, N, dN);
+    const vec3 xr = X_.transpose()*dN.col(0);
+    const vec3 xs = X_.transpose()*dN.col(1);
+    quadShape<4>::eval(0, 1, N, dN);
+    const vec3 xd = X_.transpose()*dN.col(0) - xr;     // dX/dr = x_r + s x_d
+    Eigen::Matrix<double, 3, 2> M;
+    M << xr, xs;
+    const Eigen::Matrix2d G = M.transpose()*M;
+    if (!(G.determinant() > 1e-12*G.trace()*G.trace()))
+    {
+        throw numericalError("mitc4: the element's initial geometry is degenerate");
+    }
+    // c = (m_r . x_d, m_s . x_d) with m_r, m_s the rows of G^-1 M^T
+    const Eigen::Vector2d c = G.ldlt().solve(M.transpose()*xd);
+    const double cr = c(0), cs = c(1);
+    const double d = cr*cr + cs*cs - 1;
+    if (!(std::abs(d) > 1e-3))
+    {
+        throw numericalError
+        (
+            "mitc4: the element is too distorted for MITC4+ (d = "
+          + std::to_string(d) + ", Ko, Lee & Bathe 2017 eq. 24)"
+        );
+    }
+    aTie_ << cr*(cr - 1)/(2*d), cr*(cr + 1)/(2*d),
+             cs*(cs - 1)/(2*d), cs*(cs + 1)/(2*d), 2*cr*cs/d;
 }
 
 
@@ -59,10 +93,15 @@ mitc4::mitc4
     const Eigen::Vector4d& a,
     const shellElastic& law,
     int nThickness,
-    bool lobatto
+    bool lobatto,
+    bool plus
 )
 :
-    mitc4(X, V0, a, std::make_shared<shellElastic>(law), nThickness, lobatto)
+    mitc4
+    (
+        X, V0, a, std::make_shared<shellElastic>(law), nThickness, lobatto,
+        plus
+    )
 {}
 
 
@@ -153,7 +192,51 @@ double product(const Basis& b, int i, int j, Row&& dP)
 //  for e_st
 constexpr double tie[4][2] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
 
+//- MITC4+ membrane tying points A (0, 1), B (0, -1) (rr), C (1, 0),
+//  D (-1, 0) (ss), E (0, 0) (rs), and the product each ties
+constexpr double tieM[5][2] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}, {0, 0}};
+constexpr int tieMij[5][2] = {{0, 0}, {0, 0}, {1, 1}, {1, 1}, {0, 1}};
+
 } // anonymous namespace
+
+
+mitc4::membraneTies mitc4::tieMembrane
+(
+    const std::array<shellNodeState, 4>& nodes
+) const
+{
+    membraneTies m;
+    Eigen::Matrix<double, 1, nDofs> dP;
+    for (int p = 0; p < 5; ++p)
+    {
+        m.b[p] = at(tieM[p][0], tieM[p][1], 0, nodes);
+        m.p(p) = product(m.b[p], tieMij[p][0], tieMij[p][1], dP);
+        m.dP.row(p) = dP;
+    }
+    return m;
+}
+
+
+Eigen::Matrix<double, 3, 5> mitc4::plusWeights(double r, double s) const
+{
+    // Rows: E_rr, E_ss, 2E_rs; columns: the products A, B, C, D, E
+    // (E_ij = P_ij/2 at the ties; mitc4.H)
+    const Eigen::Matrix<double, 5, 1>& a = aTie_;
+    Eigen::Matrix<double, 3, 5> W;
+    W.row(0) = 0.5*(s*s - 1)*a.transpose();
+    W(0, 0) += 0.25*(1 + s);
+    W(0, 1) += 0.25*(1 - s);
+    W.row(1) = 0.5*(r*r - 1)*a.transpose();
+    W(1, 2) += 0.25*(1 + r);
+    W(1, 3) += 0.25*(1 - r);
+    W.row(2) = r*s*a.transpose();
+    W(2, 0) += 0.25*r;
+    W(2, 1) -= 0.25*r;
+    W(2, 2) += 0.25*s;
+    W(2, 3) -= 0.25*s;
+    W(2, 4) += 1;
+    return W;
+}
 
 
 void mitc4::localFrame
@@ -228,6 +311,7 @@ void mitc4::strains
     double s,
     double t,
     const std::array<shellNodeState, 4>& nodes,
+    const membraneTies* ties,
     Eigen::Matrix<double, 5, 1>& E,
     Eigen::Matrix<double, 5, nDofs>* B
 ) const
@@ -253,6 +337,41 @@ void mitc4::strains
         const double v = product(bt, rt ? 0 : 1, 2, dP);
         E(rt ? 3 : 4) += w*v;
         if (B) B->row(rt ? 3 : 4) += w*dP;
+    }
+    if (!ties) return;
+    // MITC4+: the mid-surface membrane strains replaced by the assumed ones
+    const basis bm = at(r, s, 0, nodes);
+    E(0) -= 0.5*product(bm, 0, 0, dP);
+    if (B) B->row(0) -= 0.5*dP;
+    E(1) -= 0.5*product(bm, 1, 1, dP);
+    if (B) B->row(1) -= 0.5*dP;
+    E(2) -= product(bm, 0, 1, dP);
+    if (B) B->row(2) -= dP;
+    const Eigen::Matrix<double, 3, 5> W = plusWeights(r, s);
+    E.head<3>() += W*ties->p;
+    if (B) B->topRows<3>() += W*ties->dP;
+}
+
+
+void mitc4::addPlusSecond
+(
+    double r,
+    double s,
+    const membraneTies& ties,
+    const vec3& mSum,
+    const std::array<shellNodeState, 4>& nodes,
+    matQ& K
+) const
+{
+    // The displacement-based mid-surface strains out, the tied ones in
+    const basis bm = at(r, s, 0, nodes);
+    addSecond(bm, 0, 0, -0.5*mSum(0), nodes, K);
+    addSecond(bm, 1, 1, -0.5*mSum(1), nodes, K);
+    addSecond(bm, 0, 1, -mSum(2), nodes, K);
+    const Eigen::Matrix<double, 5, 1> omega = plusWeights(r, s).transpose()*mSum;
+    for (int p = 0; p < 5; ++p)
+    {
+        addSecond(ties.b[p], tieMij[p][0], tieMij[p][1], omega(p), nodes, K);
     }
 }
 
@@ -280,53 +399,62 @@ bool mitc4::integrate
     mat5 T, D;
     mat3 Q;
     Eigen::Matrix<double, 5, nDofs> B;
+    membraneTies ties;
+    if (plus_) ties = tieMembrane(nodes);
+    const membraneTies* tp = plus_ ? &ties : nullptr;
     int q = 0;
     for (double r : pts)
     for (double s : pts)
-    for (int it = 0; it < nThickness_; ++it, ++q)
     {
-        const double t = zt[it];
-        double detJ;
-        localFrame(r, s, t, T, Q, detJ);
-        const double w = detJ*wt[it];       // 2 x 2 Gauss weights are 1
-        strains(r, s, t, nodes, E, f || K ? &B : nullptr);
-        const vec5 eps = T*E;
-        if (W)
+        // MITC4+: the membrane resultants summed through the thickness
+        vec3 mSum = vec3::Zero();
+        for (int it = 0; it < nThickness_; ++it, ++q)
         {
-            *W += w*law_->energy(eps);
-            if (!f && !K) continue;
-        }
-        if
-        (
-            !law_->stress
+            const double t = zt[it];
+            double detJ;
+            localFrame(r, s, t, T, Q, detJ);
+            const double w = detJ*wt[it];       // 2 x 2 Gauss weights are 1
+            strains(r, s, t, nodes, tp, E, f || K ? &B : nullptr);
+            const vec5 eps = T*E;
+            if (W)
+            {
+                *W += w*law_->energy(eps);
+                if (!f && !K) continue;
+            }
+            if
             (
-                Q, eps, committed ? (*committed)[q] : none,
-                trial ? (*trial)[q] : scratch, S, D
+                !law_->stress
+                (
+                    Q, eps, committed ? (*committed)[q] : none,
+                    trial ? (*trial)[q] : scratch, S, D
+                )
             )
-        )
-        {
-            return false;
+            {
+                return false;
+            }
+            const Eigen::Matrix<double, 5, nDofs> Bl = T*B;
+            if (f) *f += w*Bl.transpose()*S;
+            if (!K) continue;
+            *K += w*Bl.transpose()*D*Bl;
+            // Geometric part: the covariant stress resultants T^T S times the
+            // second derivatives of the covariant strains
+            const vec5 m = w*T.transpose()*S;
+            const basis b = at(r, s, t, nodes);
+            addSecond(b, 0, 0, 0.5*m(0), nodes, *K);
+            addSecond(b, 1, 1, 0.5*m(1), nodes, *K);
+            addSecond(b, 0, 1, m(2), nodes, *K);
+            for (int p = 0; p < 4; ++p)
+            {
+                const basis bt = at(tie[p][0], tie[p][1], t, nodes);
+                const bool rt = p < 2;
+                const double wp = rt
+                  ? 0.5*(1 + tie[p][1]*s)
+                  : 0.5*(1 + tie[p][0]*r);
+                addSecond(bt, rt ? 0 : 1, 2, wp*m(rt ? 3 : 4), nodes, *K);
+            }
+            mSum += m.head<3>();
         }
-        const Eigen::Matrix<double, 5, nDofs> Bl = T*B;
-        if (f) *f += w*Bl.transpose()*S;
-        if (!K) continue;
-        *K += w*Bl.transpose()*D*Bl;
-        // Geometric part: the covariant stress resultants T^T S times the
-        // second derivatives of the covariant strains
-        const vec5 m = w*T.transpose()*S;
-        const basis b = at(r, s, t, nodes);
-        addSecond(b, 0, 0, 0.5*m(0), nodes, *K);
-        addSecond(b, 1, 1, 0.5*m(1), nodes, *K);
-        addSecond(b, 0, 1, m(2), nodes, *K);
-        for (int p = 0; p < 4; ++p)
-        {
-            const basis bt = at(tie[p][0], tie[p][1], t, nodes);
-            const bool rt = p < 2;
-            const double wp = rt
-              ? 0.5*(1 + tie[p][1]*s)
-              : 0.5*(1 + tie[p][0]*r);
-            addSecond(bt, rt ? 0 : 1, 2, wp*m(rt ? 3 : 4), nodes, *K);
-        }
+        if (plus_ && K) addPlusSecond(r, s, ties, mSum, nodes, *K);
     }
     return true;
 }
@@ -393,6 +521,8 @@ void mitc4::pointStrains
     const double pts[2] = {-g, g};
     mat5 T;
     vec5 E;
+    membraneTies ties;
+    if (plus_) ties = tieMembrane(nodes);
     int q = 0;
     for (double r : pts)
     for (double s : pts)
@@ -400,7 +530,7 @@ void mitc4::pointStrains
     {
         double detJ;
         localFrame(r, s, zt[it], T, Q[q], detJ);
-        strains(r, s, zt[it], nodes, E, nullptr);
+        strains(r, s, zt[it], nodes, plus_ ? &ties : nullptr, E, nullptr);
         eps[q] = T*E;
     }
 }

@@ -16,13 +16,13 @@ namespace form
 
 bool shellSet::isShellType(const std::string& type)
 {
-    return type == "MITC4";
+    return type == "MITC4" || type == "MITC4+";
 }
 
 
 std::string shellSet::validTypes()
 {
-    return "MITC4";
+    return "MITC4 MITC4+";
 }
 
 
@@ -239,11 +239,24 @@ shellSet::shellSet
                     );
                 }
             }
-            elements_[b].emplace_back
-            (
-                X, V0, Eigen::Vector4d::Constant(blk.shell.thickness), law,
-                blk.shell.points, blk.shell.lobatto
-            );
+            try
+            {
+                elements_[b].emplace_back
+                (
+                    X, V0, Eigen::Vector4d::Constant(blk.shell.thickness),
+                    law, blk.shell.points, blk.shell.lobatto,
+                    blk.elementType == "MITC4+"
+                );
+            }
+            catch (const numericalError& err)
+            {
+                throw inputError
+                (
+                    "mesh",
+                    "block '" + blk.name + "' element " + std::to_string(e)
+                  + ": " + err.what()
+                );
+            }
         }
     }
     frames_.reserve(V0_.size());
