@@ -25,11 +25,15 @@
 #      face (tests/cases/shellBending): the centre's mid-surface follows
 #      the punch by the half thickness (1e-6), the punch force is beam
 #      theory's 24 D b w/L^3 = 0.43956 within 0.2 % (observed -0.024 %),
-#      and the support's reaction balances it.
+#      and the support's reaction balances it; the thinnest element's
+#      current thickness (summary shellThickness) is below the section's
+#      by less than 1e-3; the stresses at the bottom, middle and top
+#      points are written.
 #   5. Bad input stops with a message naming the file and the entry: a
 #      negative thickness, 11 points through it, 2 Lobatto points, a shell section for a
 #      solid element, shells in a 2D analysis, an oblique symmetry plane,
-#      a pressure on the sheet's edge, an unknown shell element type, a
+#      a pressure on the sheet's edge, a line load on its face, an
+#      unknown shell element type, a
 #      sheet two cells thick.
 . "$(dirname "$0")/testFunctions"
 ref=-0.3024
@@ -119,6 +123,16 @@ checkClose "bending, top face: centre follows the punch" "$(summaryValue "$c" wC
 checkClose "bending, top face: punch force vs beam theory" "$(summaryValue "$c" punchForce)" -$beam 2e-3
 checkClose "bending, top face: end reaction balances it" \
     "$(summaryValue "$c" endReaction)" "$(calc '-f' f="$(summaryValue "$c" punchForce)")" 1e-8
+# The current thickness (summary shellThickness) falls below the
+# section's 1 where the sheet is stretched (Poisson), by less than 1e-3
+t=$(summaryValue "$c" thicknessMin)
+checkBelow "bending: thinnest element below the section thickness 1" "$t" 1
+checkBelow "bending: and by less than 1e-3" "$(calc '1 - t' t="$t")" 1e-3
+last=$(ls -d "$c"/[0-9]* | sort -g | tail -1)
+[ -f "$last/strip/sigmaTop" ] && [ -f "$last/strip/sigmaMiddle" ] \
+    && [ -f "$last/strip/sigmaBottom" ] && [ -f "$last/strip/thickness" ] \
+    && pass "bending: stresses at the bottom, middle and top points written" \
+    || fail "bending: no sigmaTop, sigmaMiddle, sigmaBottom, thickness in $last/strip"
 runCopy shellBending "$c" strip \
     "sed -i 's/point (0 0 5.5)/point (0 0 -5.5)/; s/(1 (0 0 -0.1))/(1 (0 0 0.1))/; s/patch top;/patch bottom;/' constant/contactProperties" \
     || fail "bending, bottom face (see $c/log.formFoam)"
@@ -151,6 +165,8 @@ bad "oblique symmetry plane" "normal.*must be a coordinate axis" \
     "sed -i 's/normal (0 1 0)/normal (0 1 1)/' 0/roof/D"
 bad "pressure on the sheet's edge" "freeEdge.*pressures act on the faces of the sheet" \
     "sed -i 's/freeEdge  { type free; }/freeEdge { type pressure; pressure 1; }/' 0/roof/D"
+bad "line load on the sheet's face" "line load on 'outer'.*not a side" \
+    "sed -i 's/outer     { type traction; traction (0 0 -0.09); }/outer { type lineLoad; lineLoad (0 0 1); }/' 0/roof/D"
 bad "unknown shell element" "elementType.*MITC4 MITC4\\+" \
     "sed -i 's/^elementType .*/elementType     MITC4p;/' constant/roof/solidProperties"
 bad "sheet two cells thick" "not meshed one cell thick|no two opposite faces" \

@@ -163,16 +163,22 @@ void form::vtkWriter::write
     }
     os << "</DataArray>\n</PointData>\n<CellData>\n";
 
-    os << "<DataArray type=\"Float64\" Name=\"sigma\" NumberOfComponents=\"6\""
-       << " ComponentName0=\"xx\" ComponentName1=\"yy\" ComponentName2=\"zz\""
-       << " ComponentName3=\"xy\" ComponentName4=\"yz\" ComponentName5=\"xz\""
-       << " format=\"ascii\">\n";
-    for (const auto& r : results)
+    const auto tensorArray = [&](const std::string& name, auto get)
     {
-        const vec6 s = toVoigtStress(r.cauchy);
-        for (int a = 0; a < 6; ++a) os << s(a) << (a < 5 ? ' ' : '\n');
-    }
-    os << "</DataArray>\n";
+        os << "<DataArray type=\"Float64\" Name=\"" << name << "\""
+           << " NumberOfComponents=\"6\""
+           << " ComponentName0=\"xx\" ComponentName1=\"yy\""
+           << " ComponentName2=\"zz\" ComponentName3=\"xy\""
+           << " ComponentName4=\"yz\" ComponentName5=\"xz\""
+           << " format=\"ascii\">\n";
+        for (const auto& r : results)
+        {
+            const vec6 s = toVoigtStress(get(r));
+            for (int a = 0; a < 6; ++a) os << s(a) << (a < 5 ? ' ' : '\n');
+        }
+        os << "</DataArray>\n";
+    };
+    tensorArray("sigma", [](const elementResult& r) { return r.cauchy; });
 
     const auto scalarArray = [&](const char* name, auto get)
     {
@@ -206,6 +212,16 @@ void form::vtkWriter::write
             }
         }
         os << "</DataArray>\n";
+        // The stress at the bottom, middle and top points (elementResult)
+        const char* layer[3] = {"sigmaBottom", "sigmaMiddle", "sigmaTop"};
+        for (int l = 0; l < 3; ++l)
+        {
+            tensorArray
+            (
+                layer[l],
+                [l](const elementResult& r) { return r.shellLayers[l]; }
+            );
+        }
     }
     os << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 

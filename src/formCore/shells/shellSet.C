@@ -330,10 +330,24 @@ elementResult shellSet::result
     elementResult r;
     if (!law) return r;
     const int nq = int(Q.size());
+    // The bottom, middle and top points through the thickness: weights
+    // of point it in each layer
+    const std::vector<double>& zt = el.thicknessPoints();
+    const int nT = int(zt.size());
+    std::vector<std::array<double, 3>> layer(nT, {0, 0, 0});
+    const int bottom = int(std::min_element(zt.begin(), zt.end()) - zt.begin());
+    const int top = int(std::max_element(zt.begin(), zt.end()) - zt.begin());
+    layer[bottom][0] = layer[top][2] = 0.25;
+    std::vector<int> order(nT);
+    for (int i = 0; i < nT; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return zt[a] < zt[b]; });
+    if (nT % 2) layer[order[nT/2]][1] = 0.25;
+    else layer[order[nT/2 - 1]][1] = layer[order[nT/2]][1] = 0.125;
     for (int q = 0; q < nq; ++q)
     {
         const planeStressMaterial::pointOutput o =
             law->output(Q[q], eps[q], states[q]);
+        for (int l = 0; l < 3; ++l) r.shellLayers[l] += layer[q % nT][l]*o.cauchy;
         r.cauchy += o.cauchy/nq;
         r.equivalentStrain += o.equivalentStrain/nq;
         r.thicknessStretch = q

@@ -40,10 +40,14 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
             if (nDim == 3 && face.nodes.size() == 2)
             {
                 // A shell edge: the traction acts on the side face of
-                // the sheet, its length times the thickness
+                // the sheet, its length times the thickness; a line load
+                // on its length
                 const double area =
                     (X.row(1) - X.row(0)).norm()
-                   *mesh.blocks[elemBlock[face.element]].shell.thickness;
+                   *(
+                        l.perLength ? 1.0
+                      : mesh.blocks[elemBlock[face.element]].shell.thickness
+                    );
                 f.resize(6);
                 f << 0.5*area*tv, 0.5*area*tv;
             }
@@ -233,6 +237,26 @@ void solidModel::addTraction(const std::string& faceSet, vectorTimeFunction t)
     m.faceSet(faceSet);
     m.tractions.push_back({faceSet, std::move(t), {}});
     if (m.finalised) m.tractions.back().faces = m.locateFaces(faceSet);
+}
+
+
+void solidModel::addLineLoad(const std::string& faceSet, vectorTimeFunction f)
+{
+    impl& m = *impl_;
+    for (const feFace& face : m.faceSet(faceSet))
+    {
+        if (m.nDim != 3 || face.nodes.size() != 2)
+        {
+            throw inputError
+            (
+                faceSet,
+                "a line load on '" + faceSet + "', which is not a side"
+                " (edge) of a shell sheet: use a traction"
+            );
+        }
+    }
+    addTraction(faceSet, std::move(f));
+    m.tractions.back().perLength = true;
 }
 
 

@@ -119,6 +119,17 @@ void Foam::formScene::readSummary()
                     << x << "'; valid: max min" << exit(FatalIOError);
             }
         }
+        else if (type == "shellThickness")
+        {
+            keys.append(word("extreme"));
+            const word x = ed.getOrDefault<word>("extreme", "min");
+            if (!wordList{"max", "min"}.found(x))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'extreme' in " << ed.name() << ": unknown '"
+                    << x << "'; valid: min max" << exit(FatalIOError);
+            }
+        }
         else if (type == "difference")
         {
             keys.append(word("of"));
@@ -157,7 +168,7 @@ void Foam::formScene::readSummary()
                 << "Unknown summary type '" << type << "' in " << ed.name()
                 << nl << "    Valid types: displacement position reaction"
                 << " circleRadius rotation bendingRadius extent difference"
-                << " uChannelSpringback"
+                << " uChannelSpringback shellThickness"
                 << (contact_ ? " toolForce toolPosition" : "")
                 << (
                        !fluid_ ? ""
@@ -232,7 +243,8 @@ void Foam::formScene::readSummary()
         const wordList solidTypes
         {
             "displacement", "position", "reaction", "circleRadius",
-            "rotation", "bendingRadius", "extent", "uChannelSpringback"
+            "rotation", "bendingRadius", "extent", "uChannelSpringback",
+            "shellThickness"
         };
         if (solids_.empty() && solidTypes.found(type))
         {
@@ -321,6 +333,13 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         value =
             ed.getOrDefault<word>("extreme", "max") == "max"
           ? c.maxCoeff() : c.minCoeff();
+    }
+    else if (type == "shellThickness")
+    {
+        value = s.shellThickness
+        (
+            ed.getOrDefault<word>("extreme", "min") == "max", ed
+        );
     }
     else if (type == "bendingRadius")
     {

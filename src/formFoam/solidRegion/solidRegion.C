@@ -122,7 +122,7 @@ Foam::wordList Foam::solidRegion::conditionTypes()
     return
     {
         "fixedDisplacement", "clamped", "symmetryPlane", "rigidMotion",
-        "traction", "pressure", "free"
+        "traction", "lineLoad", "pressure", "free"
     };
 }
 

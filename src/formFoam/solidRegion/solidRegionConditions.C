@@ -353,6 +353,31 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
             }
         );
     }
+    else if (type == "lineLoad")
+    {
+        // A force per unit length on the sides of a shell sheet
+        checkKeywords(pd, {"type", "lineLoad", "value"});
+        std::shared_ptr<Function1<vector>> fl
+        (
+            Function1<vector>::New("lineLoad", pd).ptr()
+        );
+        try
+        {
+            model_->addLineLoad
+            (
+                patch,
+                [fl](double t)
+                {
+                    const vector v = fl->value(t);
+                    return form::vec3(v.x(), v.y(), v.z());
+                }
+            );
+        }
+        catch (const form::inputError& err)
+        {
+            fatalInput(pd, err);
+        }
+    }
     else if (type == "pressure")
     {
         checkKeywords(pd, {"type", "pressure", "value"});

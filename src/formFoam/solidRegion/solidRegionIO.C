@@ -180,10 +180,34 @@ bool Foam::solidRegion::write()
         }
     }
 
-    // Shells: the current thickness, and the director frames for restarts
+    // Shells: the current thickness, the stresses at the bottom, middle
+    // and top points through it, and the director frames for restarts
     autoPtr<volScalarField> thickness;
+    PtrList<volSymmTensorField> layers;
     if (shells)
     {
+        const char* names[3] = {"sigmaBottom", "sigmaMiddle", "sigmaTop"};
+        layers.setSize(3);
+        for (label l = 0; l < 3; ++l)
+        {
+            layers.set
+            (
+                l,
+                new volSymmTensorField
+                (
+                    io(names[l]), *mesh_,
+                    dimensionedSymmTensor(dimPressure, Zero)
+                )
+            );
+            forAll(C, celli)
+            {
+                const form::mat3& m = results[celli].shellLayers[l];
+                layers[l][celli] = symmTensor
+                (
+                    m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)
+                );
+            }
+        }
         thickness.reset
         (
             new volScalarField
@@ -202,6 +226,7 @@ bool Foam::solidRegion::write()
     // precision (a restart reproduces the run to round-off)
     bool ok = pointD.write();
     if (thickness) ok = thickness->write() && ok;
+    for (const volSymmTensorField& f : layers) ok = f.write() && ok;
     ok = D.write() && ok;
     ok = sigma.write() && ok;
     ok = sigmaEq.write() && ok;
@@ -408,3 +433,35 @@ bool Foam::solidRegion::readState(const word& timeName)
 
 
 // ************************************************************************* //
+
+
+Foam::scalar Foam::solidRegion::shellThickness
+(
+    bool largest,
+    const dictionary& dict
+) const
+{
+    const form::feMesh& fe = feMesh_->feMesh();
+    const std::vector<form::elementResult> results = model_->elementResults();
+    scalar value = largest ? -GREAT : GREAT;
+    bool any = false;
+    std::size_t k = 0;
+    for (const form::elementBlock& b : fe.blocks)
+    {
+        for (int e = 0; e < b.nElements(); ++e, ++k)
+        {
+            if (!form::shellSet::isShellType(b.elementType)) continue;
+            const scalar t = b.shell.thickness*results[k].thicknessStretch;
+            value = largest ? max(value, t) : min(value, t);
+            any = true;
+        }
+    }
+    if (!any)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'type' in " << dict.name() << ": solid region '"
+            << name_ << "' has no shell elements (elementType "
+            << elementType_ << ")" << exit(FatalIOError);
+    }
+    return value;
+}

@@ -7,6 +7,8 @@
 //     tip displacements at half and full load;
 //   - the strip rolled up into a full circle by an end moment: the tip
 //     returns to the clamp (exact: pure bending, inextensible);
+//   - the stresses at the bottom, middle and top points through the
+//     thickness of a strip under a small end moment: M z/I, 0, -M z/I;
 //   - save / restore of a converged state (frames included) reproduces
 //     it; a revert gives back the committed directors;
 //   - an elasto-plastic plate strip in cylindrical bending (plane strain)
@@ -202,6 +204,47 @@ TEST(shellModel, stripRolledUpIntoACircle)
     // The tip director points back along -z... after a full turn: +z
     const vec3 d = model.shells()->director(tip[0], model.dofs(), model.U());
     EXPECT_GT(d(2), 0.99);
+}
+
+
+TEST(shellModel, stressesAtTheBottomMiddleAndTopPoints)
+{
+    // The strip L = 12, b = 1, h = 0.1, E = 1.2e6, nu = 0 (16 elements,
+    // 5 Gauss points through the thickness) under a small end moment M
+    // (the tip turns by 0.06 rad): uniform curvature M/EI, the bending
+    // stress M z/I at the outermost points z = +-0.906 h/2, zero at the
+    // middle; -M curls the strip up, compressing its top (the director's
+    // side). Within 0.5 % (the geometric nonlinearity of the turn).
+    const double L = 12, E = 1.2e6, h = 0.1;
+    const double EI = E*h*h*h/12, M = 0.01*2*M_PI*EI/L;
+    solidModel model(strip(16, L, 1, h), analysisType::solid3D, elastic(E, 0));
+    clamp(model);
+    const std::vector<int>& tip = model.mesh().nodeSets.at("tip");
+    model.addNodalLoad(tip, 4, [=](double t) { return -0.5*M*t; });
+    model.finalise();
+    auto solver = linearSolver::New("cholmod");
+    stepControls steps;
+    steps.deltaT = 1;
+    std::ostringstream log;
+    staticSolver(model, *solver, tight(), steps, log).run(nullptr);
+    std::vector<double> z, w;
+    gaussLegendre1D(5, z, w);
+    const double sigma = M*(z.back()*h/2)/(h*h*h/12);
+    for (const elementResult& r : model.elementResults())
+    {
+        EXPECT_NEAR(r.shellLayers[2](0, 0)/-sigma, 1, 5e-3);
+        EXPECT_NEAR(r.shellLayers[0](0, 0)/sigma, 1, 5e-3);
+        EXPECT_LT(std::abs(r.shellLayers[1](0, 0)), 5e-3*sigma);
+        EXPECT_LT(std::abs(r.shellLayers[2](1, 1)), 1e-6*sigma);
+    }
+    const elementResult r = model.elementResults()[8];
+    std::printf
+    (
+        "    end moment: sigma_xx bottom %.3f middle %.3f top %.3f"
+        " (M z/I = %.3f)\n",
+        r.shellLayers[0](0, 0), r.shellLayers[1](0, 0), r.shellLayers[2](0, 0),
+        sigma
+    );
 }
 
 
