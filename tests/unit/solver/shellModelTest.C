@@ -27,6 +27,7 @@
 //     points through it, a 2D mesh, a rotation constraint on a solid
 //     node, a shell node without 5 dofs.
 #include "staticSolver.H"
+#include "shellTestTools.H"
 #include "timeIntegrator.H"
 #include "shellSet.H"
 #include "planeStressMaterial.H"
@@ -43,38 +44,7 @@ using namespace form;
 namespace
 {
 
-//- A strip [0, L] x [0, b] in the plane z = 0 of n x 1 MITC4 elements
-//  (nodes 2i, 2i + 1 at x = L i/n), node sets "clamp" (x = 0) and "tip"
-feMesh strip(int n, double L, double b, double h, int points = 5)
-{
-    feMesh mesh;
-    mesh.nDim = 3;
-    mesh.X.resize(2*(n + 1), 3);
-    for (int i = 0; i <= n; ++i)
-    {
-        mesh.X.row(2*i) << L*i/n, 0, 0;
-        mesh.X.row(2*i + 1) << L*i/n, b, 0;
-    }
-    elementBlock blk;
-    blk.name = "sheet";
-    blk.elementType = "MITC4";
-    blk.materialName = "sheet";
-    blk.nodesPerElement = 4;
-    blk.shell.thickness = h;
-    blk.shell.points = points;
-    for (int e = 0; e < n; ++e)
-    {
-        blk.connectivity.insert
-        (
-            blk.connectivity.end(), {2*e, 2*e + 2, 2*e + 3, 2*e + 1}
-        );
-    }
-    mesh.blocks.push_back(blk);
-    mesh.nodeSets["clamp"] = {0, 1};
-    mesh.nodeSets["tip"] = {2*n, 2*n + 1};
-    shellSet::assignNodeDofs(mesh);
-    return mesh;
-}
+using test::strip;
 
 std::map<std::string, std::shared_ptr<material>> elastic(double E, double nu)
 {
