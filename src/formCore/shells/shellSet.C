@@ -9,6 +9,7 @@ Description
 #include "quadShape.H"
 #include "planeStressMaterial.H"
 #include <algorithm>
+#include <map>
 #include <cmath>
 
 namespace form
@@ -136,6 +137,52 @@ shellSet::shellSet
         }
     }
     if (!any) return;
+
+    // Four distinct corners per element; at most two elements per edge
+    // (a branching, non-manifold sheet has no director field)
+    std::map<std::pair<int, int>, int> edgeElements;
+    for (std::size_t b = 0; b < nb; ++b)
+    {
+        const elementBlock& blk = mesh.blocks[b];
+        if (!isShellType(blk.elementType)) continue;
+        for (int e = 0; e < blk.nElements(); ++e)
+        {
+            const int* n = blk.nodes(e);
+            const std::string where =
+                "block '" + blk.name + "' element " + std::to_string(e);
+            for (int k = 0; k < 4; ++k)
+            {
+                for (int l = 0; l < k; ++l)
+                {
+                    if (n[k] == n[l])
+                    {
+                        throw inputError
+                        (
+                            "mesh",
+                            where + ": node " + std::to_string(n[k])
+                          + " appears twice (a degenerate quadrilateral; "
+                          + blk.elementType + " needs four distinct corners)"
+                        );
+                    }
+                }
+                const std::pair<int, int> edge =
+                    std::minmax(n[k], n[(k + 1) % 4]);
+                if (++edgeElements[edge] > 2)
+                {
+                    throw inputError
+                    (
+                        "mesh",
+                        where + ": the edge between nodes "
+                      + std::to_string(edge.first) + " and "
+                      + std::to_string(edge.second) + " belongs to more"
+                        " than two shell elements (a non-manifold edge: the"
+                        " sheet branches there); mesh the branches as"
+                        " separate sheets"
+                    );
+                }
+            }
+        }
+    }
 
     const dofMap dofs = dofMap::of(mesh);
     for (const int n : nodeOf_)

@@ -25,7 +25,8 @@
 //     trapezoidal rule, 100 steps per period);
 //   - input errors: a fold (two elements at 90 deg), a zero thickness, 11
 //     points through it, a 2D mesh, a rotation constraint on a solid
-//     node, a shell node without 5 dofs.
+//     node, a shell node without 5 dofs, an element with a repeated
+//     node, an edge shared by three elements (non-manifold).
 #include "staticSolver.H"
 #include "shellTestTools.H"
 #include "timeIntegrator.H"
@@ -535,6 +536,40 @@ TEST(shellModel, inputErrorsNameTheirEntry)
             [&] { solidModel(mesh, analysisType::solid3D, elastic(1, 0)); },
             "mesh"
         );
+    }
+    {
+        // An element with a repeated node
+        feMesh mesh = strip(2, 2, 1, 0.1);
+        mesh.blocks[0].connectivity[3] = 2;     // element 0: 0 2 3 2
+        expectInput
+        (
+            [&] { solidModel(mesh, analysisType::solid3D, elastic(1, 0)); },
+            "mesh"
+        );
+    }
+    {
+        // A non-manifold edge: a third element on the edge 2-3 (a fin
+        // standing up from the strip)
+        feMesh mesh = strip(2, 2, 1, 0.1);
+        mesh.X.conservativeResize(8, 3);
+        mesh.X.row(6) << 1, 0, 1;
+        mesh.X.row(7) << 1, 1, 1;
+        mesh.blocks[0].connectivity.insert
+        (
+            mesh.blocks[0].connectivity.end(), {2, 6, 7, 3}
+        );
+        mesh.nodeDofs.assign(8, 5);
+        try
+        {
+            solidModel(mesh, analysisType::solid3D, elastic(1, 0));
+            ADD_FAILURE() << "no error for a non-manifold edge";
+        }
+        catch (const inputError& e)
+        {
+            EXPECT_EQ(e.entry(), "mesh");
+            EXPECT_NE(std::string(e.what()).find("non-manifold"), std::string::npos)
+                << e.what();
+        }
     }
     {
         // A solid node (not in a shell element) with a rotation constraint
