@@ -305,19 +305,31 @@ void mitc4::localFrame
 }
 
 
+std::array<mitc4::basis, 4> mitc4::tieShear
+(
+    double t,
+    const std::array<shellNodeState, 4>& nodes
+) const
+{
+    std::array<basis, 4> tb;
+    for (int p = 0; p < 4; ++p) tb[p] = at(tie[p][0], tie[p][1], t, nodes);
+    return tb;
+}
+
+
 void mitc4::strains
 (
     double r,
     double s,
-    double t,
-    const std::array<shellNodeState, 4>& nodes,
+    const basis& b,
+    const std::array<basis, 4>& tb,
+    const basis* bm,
     const membraneTies* ties,
     Eigen::Matrix<double, 5, 1>& E,
     Eigen::Matrix<double, 5, nDofs>* B
 ) const
 {
     Eigen::Matrix<double, 1, nDofs> dP;
-    const basis b = at(r, s, t, nodes);
     E(0) = 0.5*product(b, 0, 0, dP);
     if (B) B->row(0) = 0.5*dP;
     E(1) = 0.5*product(b, 1, 1, dP);
@@ -329,23 +341,21 @@ void mitc4::strains
     if (B) B->bottomRows<2>().setZero();
     for (int p = 0; p < 4; ++p)
     {
-        const basis bt = at(tie[p][0], tie[p][1], t, nodes);
         const bool rt = p < 2;
         const double w = rt
           ? 0.5*(1 + tie[p][1]*s)
           : 0.5*(1 + tie[p][0]*r);
-        const double v = product(bt, rt ? 0 : 1, 2, dP);
+        const double v = product(tb[p], rt ? 0 : 1, 2, dP);
         E(rt ? 3 : 4) += w*v;
         if (B) B->row(rt ? 3 : 4) += w*dP;
     }
     if (!ties) return;
     // MITC4+: the mid-surface membrane strains replaced by the assumed ones
-    const basis bm = at(r, s, 0, nodes);
-    E(0) -= 0.5*product(bm, 0, 0, dP);
+    E(0) -= 0.5*product(*bm, 0, 0, dP);
     if (B) B->row(0) -= 0.5*dP;
-    E(1) -= 0.5*product(bm, 1, 1, dP);
+    E(1) -= 0.5*product(*bm, 1, 1, dP);
     if (B) B->row(1) -= 0.5*dP;
-    E(2) -= product(bm, 0, 1, dP);
+    E(2) -= product(*bm, 0, 1, dP);
     if (B) B->row(2) -= dP;
     const Eigen::Matrix<double, 3, 5> W = plusWeights(r, s);
     E.head<3>() += W*ties->p;
@@ -357,6 +367,7 @@ void mitc4::addPlusSecond
 (
     double r,
     double s,
+    const basis& bm,
     const membraneTies& ties,
     const vec3& mSum,
     const std::array<shellNodeState, 4>& nodes,
@@ -364,7 +375,6 @@ void mitc4::addPlusSecond
 ) const
 {
     // The displacement-based mid-surface strains out, the tied ones in
-    const basis bm = at(r, s, 0, nodes);
     addSecond(bm, 0, 0, -0.5*mSum(0), nodes, K);
     addSecond(bm, 1, 1, -0.5*mSum(1), nodes, K);
     addSecond(bm, 0, 1, -mSum(2), nodes, K);
@@ -402,11 +412,17 @@ bool mitc4::integrate
     membraneTies ties;
     if (plus_) ties = tieMembrane(nodes);
     const membraneTies* tp = plus_ ? &ties : nullptr;
+    // The shear tying bases of each point through the thickness
+    std::vector<std::array<basis, 4>> tieB(nThickness_);
+    for (int it = 0; it < nThickness_; ++it) tieB[it] = tieShear(zt[it], nodes);
     int q = 0;
     for (double r : pts)
     for (double s : pts)
     {
-        // MITC4+: the membrane resultants summed through the thickness
+        // MITC4+: the mid-surface basis; the membrane resultants summed
+        // through the thickness
+        basis bm;
+        if (plus_) bm = at(r, s, 0, nodes);
         vec3 mSum = vec3::Zero();
         for (int it = 0; it < nThickness_; ++it, ++q)
         {
@@ -414,7 +430,8 @@ bool mitc4::integrate
             double detJ;
             localFrame(r, s, t, T, Q, detJ);
             const double w = detJ*wt[it];       // 2 x 2 Gauss weights are 1
-            strains(r, s, t, nodes, tp, E, f || K ? &B : nullptr);
+            const basis b = at(r, s, t, nodes);
+            strains(r, s, b, tieB[it], &bm, tp, E, f || K ? &B : nullptr);
             const vec5 eps = T*E;
             if (W)
             {
@@ -436,25 +453,23 @@ bool mitc4::integrate
             if (f) *f += w*Bl.transpose()*S;
             if (!K) continue;
             *K += w*Bl.transpose()*D*Bl;
-            // Geometric part: the covariant stress resultants T^T S times the
-            // second derivatives of the covariant strains
+            // Geometric part: the covariant stress resultants T^T S
+            // times the second derivatives of the covariant strains
             const vec5 m = w*T.transpose()*S;
-            const basis b = at(r, s, t, nodes);
             addSecond(b, 0, 0, 0.5*m(0), nodes, *K);
             addSecond(b, 1, 1, 0.5*m(1), nodes, *K);
             addSecond(b, 0, 1, m(2), nodes, *K);
             for (int p = 0; p < 4; ++p)
             {
-                const basis bt = at(tie[p][0], tie[p][1], t, nodes);
                 const bool rt = p < 2;
                 const double wp = rt
                   ? 0.5*(1 + tie[p][1]*s)
                   : 0.5*(1 + tie[p][0]*r);
-                addSecond(bt, rt ? 0 : 1, 2, wp*m(rt ? 3 : 4), nodes, *K);
+                addSecond(tieB[it][p], rt ? 0 : 1, 2, wp*m(rt ? 3 : 4), nodes, *K);
             }
             mSum += m.head<3>();
         }
-        if (plus_ && K) addPlusSecond(r, s, ties, mSum, nodes, *K);
+        if (plus_ && K) addPlusSecond(r, s, bm, ties, mSum, nodes, *K);
     }
     return true;
 }
@@ -526,12 +541,20 @@ void mitc4::pointStrains
     int q = 0;
     for (double r : pts)
     for (double s : pts)
-    for (int it = 0; it < nThickness_; ++it, ++q)
     {
-        double detJ;
-        localFrame(r, s, zt[it], T, Q[q], detJ);
-        strains(r, s, zt[it], nodes, plus_ ? &ties : nullptr, E, nullptr);
-        eps[q] = T*E;
+        basis bm;
+        if (plus_) bm = at(r, s, 0, nodes);
+        for (int it = 0; it < nThickness_; ++it, ++q)
+        {
+            double detJ;
+            localFrame(r, s, zt[it], T, Q[q], detJ);
+            strains
+            (
+                r, s, at(r, s, zt[it], nodes), tieShear(zt[it], nodes), &bm,
+                plus_ ? &ties : nullptr, E, nullptr
+            );
+            eps[q] = T*E;
+        }
     }
 }
 
