@@ -25,7 +25,9 @@
 #      face (tests/cases/shellBending): the centre's mid-surface follows
 #      the punch by the half thickness (1e-6), the punch force is beam
 #      theory's 24 D b w/L^3 = 0.43956 within 0.2 % (observed -0.024 %),
-#      and the support's reaction balances it; the thinnest element's
+#      and the support's reaction balances it; the director at the
+#      support turns by beam theory's 3 w/L = 0.003 within 1 % (summary
+#      directorRotation); the thinnest element's
 #      current thickness (summary shellThickness) is below the section's
 #      by less than 1e-3; the stresses at the bottom, middle and top
 #      points are written.
@@ -123,6 +125,8 @@ checkClose "bending, top face: centre follows the punch" "$(summaryValue "$c" wC
 checkClose "bending, top face: punch force vs beam theory" "$(summaryValue "$c" punchForce)" -$beam 2e-3
 checkClose "bending, top face: end reaction balances it" \
     "$(summaryValue "$c" endReaction)" "$(calc '-f' f="$(summaryValue "$c" punchForce)")" 1e-8
+checkClose "bending, top face: the director's turn at the support vs beam theory 3 w/L" \
+    "$(summaryValue "$c" endRotation)" 0.003 0.01
 # The current thickness (summary shellThickness) falls below the
 # section's 1 where the sheet is stretched (Poisson), by less than 1e-3
 t=$(summaryValue "$c" thicknessMin)

@@ -119,6 +119,10 @@ void Foam::formScene::readSummary()
                     << x << "'; valid: max min" << exit(FatalIOError);
             }
         }
+        else if (type == "directorRotation")
+        {
+            keys.append(word("point"));
+        }
         else if (type == "shellThickness")
         {
             keys.append(word("extreme"));
@@ -168,7 +172,7 @@ void Foam::formScene::readSummary()
                 << "Unknown summary type '" << type << "' in " << ed.name()
                 << nl << "    Valid types: displacement position reaction"
                 << " circleRadius rotation bendingRadius extent difference"
-                << " uChannelSpringback shellThickness"
+                << " uChannelSpringback shellThickness directorRotation"
                 << (contact_ ? " toolForce toolPosition" : "")
                 << (
                        !fluid_ ? ""
@@ -244,7 +248,7 @@ void Foam::formScene::readSummary()
         {
             "displacement", "position", "reaction", "circleRadius",
             "rotation", "bendingRadius", "extent", "uChannelSpringback",
-            "shellThickness"
+            "shellThickness", "directorRotation"
         };
         if (solids_.empty() && solidTypes.found(type))
         {
@@ -333,6 +337,10 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         value =
             ed.getOrDefault<word>("extreme", "max") == "max"
           ? c.maxCoeff() : c.minCoeff();
+    }
+    else if (type == "directorRotation")
+    {
+        value = s.directorRotation(ed.get<point>("point"), ed);
     }
     else if (type == "shellThickness")
     {

@@ -441,28 +441,7 @@ Foam::scalar Foam::solidRegion::displacementAt
     if (model_->shells())
     {
         // Shells: the displacement of the mid-surface node at the point
-        const form::vecX x = feMesh_->toFe(pt);
-        int nearest = -1;
-        double d2 = 0;
-        for (int n = 0; n < fe.nNodes(); ++n)
-        {
-            const double d = (fe.X.row(n).transpose() - x).squaredNorm();
-            if (nearest < 0 || d < d2)
-            {
-                nearest = n;
-                d2 = d;
-            }
-        }
-        const double size = fe.X.cwiseAbs().maxCoeff();
-        if (nearest < 0 || std::sqrt(d2) > 1e-6*max(size, 1.0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Point " << pt << " in " << dict.name() << " is not a"
-                << " node of the mid-surface of the shell region '" << name_
-                << "' (nearest node at distance " << std::sqrt(d2) << ");"
-                << " shell results are read at nodes" << exit(FatalIOError);
-        }
-        return model_->displacement()(nearest, component);
+        return model_->displacement()(shellNodeAt(pt, dict), component);
     }
     const form::pointLocation loc =
         form::locatePoint(fe, feMesh_->toFe(pt), 1e-6);
