@@ -25,6 +25,12 @@ namespace form
 
 namespace
 {
+
+//- The entry of component i (0: x or r, 1: y or z) of edge node b in the
+//  edge's own force vector and matrix (2 entries per node, node by node;
+//  the element maps them to its dofs)
+constexpr int at(int b, int i) { return 2*b + i; }
+
 void checkEdge(const matX& X, const char* where)
 {
     if ((X.rows() != 2 && X.rows() != 3) || X.cols() != 2)
@@ -61,7 +67,7 @@ vecX edgeLoad::deadTraction
         const Eigen::Vector2d dXdxi = X.transpose()*dN;
         double dS = dXdxi.norm()*w[q];
         if (axi) dS *= 2*M_PI*N.dot(X.col(0));
-        for (int b = 0; b < n; ++b) f.segment<2>(2*b) += N(b)*t*dS;
+        for (int b = 0; b < n; ++b) f.segment<2>(at(b, 0)) += N(b)*t*dS;
     }
     return f;
 }
@@ -106,8 +112,8 @@ void edgeLoad::followerPressure
         for (int b = 0; b < n; ++b)
         {
             // f_b = -p N_b (y_xi, -x_xi) W
-            f(2*b) += -c*N(b)*dxdxi(1)*W;
-            f(2*b + 1) += c*N(b)*dxdxi(0)*W;
+            f(at(b, 0)) += -c*N(b)*dxdxi(1)*W;
+            f(at(b, 1)) += c*N(b)*dxdxi(0)*W;
         }
         if (!K) continue;
         for (int b = 0; b < n; ++b)
@@ -115,12 +121,12 @@ void edgeLoad::followerPressure
             for (int d = 0; d < n; ++d)
             {
                 // K = -df/du
-                (*K)(2*b, 2*d + 1) += c*N(b)*dN(d)*W;
-                (*K)(2*b + 1, 2*d) += -c*N(b)*dN(d)*W;
+                (*K)(at(b, 0), at(d, 1)) += c*N(b)*dN(d)*W;
+                (*K)(at(b, 1), at(d, 0)) += -c*N(b)*dN(d)*W;
                 if (axi)
                 {
-                    (*K)(2*b, 2*d) += c*N(b)*dxdxi(1)*2*M_PI*N(d);
-                    (*K)(2*b + 1, 2*d) += -c*N(b)*dxdxi(0)*2*M_PI*N(d);
+                    (*K)(at(b, 0), at(d, 0)) += c*N(b)*dxdxi(1)*2*M_PI*N(d);
+                    (*K)(at(b, 1), at(d, 0)) += -c*N(b)*dxdxi(0)*2*M_PI*N(d);
                 }
             }
         }

@@ -57,18 +57,7 @@ void clamp(solidModel& model)
     for (int c = 0; c < 5; ++c) model.addConstraint(model.mesh().nodeSets.at("clamp"), c);
 }
 
-//- Newton to a tight tolerance, without the line search: along a Newton
-//  direction that turns directors by tens of degrees the energy line
-//  search cuts the step to a few percent and Newton crawls (26
-//  iterations per step instead of 8 for the roll-up)
-newtonControls tight()
-{
-    newtonControls n;
-    n.forceTolerance = 1e-10;
-    n.maxIterations = 30;
-    n.lineSearch = false;
-    return n;
-}
+using test::tight;
 
 } // anonymous namespace
 

@@ -71,10 +71,7 @@ double springbackRadius(const std::shared_ptr<material>& mat, double R, int poin
     );
     model.finalise();
     auto solver = linearSolver::New("cholmod");
-    newtonControls newton;
-    newton.forceTolerance = 1e-10;
-    newton.maxIterations = 30;
-    newton.lineSearch = false;
+    const newtonControls newton = test::tight();
     std::ostringstream log;
     stepControls steps;
     steps.deltaT = 0.1;
