@@ -120,15 +120,15 @@ mitc4::basis mitc4::at
     for (int i = 0; i < 3; ++i)
     {
         b.G[i].setZero();
-        b.g[i].setZero();
+        b.dg[i].setZero();
         b.D[i].setZero();
     }
     for (int k = 0; k < 4; ++k)
     {
         const vec3 X0 = X_.row(k).transpose();
         const vec3 V0 = V0_.row(k).transpose();
-        const vec3& x = nodes[k].x;
-        const vec3& V = nodes[k].director.V;
+        const vec3& u = nodes[k].u;
+        const vec3& dV = nodes[k].dV;
         const double h = 0.5*t*a_(k);
         // coefficient of node k's director in g_r, g_s, g_t
         b.c[0][k] = dN(k, 0)*h;
@@ -137,16 +137,17 @@ mitc4::basis mitc4::at
         for (int i = 0; i < 2; ++i)
         {
             b.G[i] += dN(k, i)*X0 + b.c[i][k]*V0;
-            b.g[i] += dN(k, i)*x + b.c[i][k]*V;
+            b.dg[i] += dN(k, i)*u + b.c[i][k]*dV;
             b.D[i].block<3, 3>(0, 5*k) = dN(k, i)*mat3::Identity();
         }
         b.G[2] += b.c[2][k]*V0;
-        b.g[2] += b.c[2][k]*V;
+        b.dg[2] += b.c[2][k]*dV;
         for (int i = 0; i < 3; ++i)
         {
             b.D[i].block<3, 2>(0, 5*k + 3) = b.c[i][k]*nodes[k].director.dV;
         }
     }
+    for (int i = 0; i < 3; ++i) b.g[i] = b.G[i] + b.dg[i];
     return b;
 }
 
@@ -180,12 +181,13 @@ void mitc4::addSecond
 namespace
 {
 
-//- The value and first derivative of g_i . g_j - G_i . G_j at a basis
+//- The value and first derivative of g_i . g_j - G_i . G_j at a basis,
+//  the value from the changes dg (shellNodeState)
 template<class Basis, class Row>
 double product(const Basis& b, int i, int j, Row&& dP)
 {
     dP = b.g[i].transpose()*b.D[j] + b.g[j].transpose()*b.D[i];
-    return b.g[i].dot(b.g[j]) - b.G[i].dot(b.G[j]);
+    return b.G[i].dot(b.dg[j]) + b.dg[i].dot(b.G[j]) + b.dg[i].dot(b.dg[j]);
 }
 
 //- The tying points: A (0, 1), B (0, -1) for e_rt; C (1, 0), D (-1, 0)

@@ -60,6 +60,24 @@ void shellDirector::coefficients
 }
 
 
+double shellDirector::cosMinusOne(double q)
+{
+    if (q < 1)
+    {
+        // sum over n >= 1 of (-q)^n/(2n)!
+        double sum = 0, term = 1;
+        for (int n = 1; n < 16; ++n)
+        {
+            term *= -q/((2.0*n - 1)*(2.0*n));
+            sum += term;
+        }
+        return sum;
+    }
+    const double h = std::sin(0.5*std::sqrt(q));
+    return -2*h*h;
+}
+
+
 shellDirector shellDirector::of(const vec3& V0)
 {
     const double L = V0.norm();
@@ -93,6 +111,7 @@ directorState shellDirector::at(double alpha, double beta) const
 
     directorState D;
     D.V = c*V + s*w;
+    D.dVc = cosMinusOne(q)*V + s*w;
     D.dV.col(0) = 2*alpha*u - s*V2;
     D.dV.col(1) = 2*beta*u + s*V1;
     D.d2V[0] = 4*alpha*alpha*u2 + 2*u - 4*alpha*ds*V2;

@@ -307,7 +307,13 @@ shellSet::shellSet
         }
     }
     frames_.reserve(V0_.size());
-    for (const vec3& v : V0_) frames_.push_back(shellDirector::of(v));
+    for (const vec3& v : V0_)
+    {
+        // the frame's director exactly the element's initial one (the
+        // committed change V - V0 is then zero before the first fold)
+        frames_.push_back(shellDirector::of(v));
+        frames_.back().V = v;
+    }
     ref_.assign(V0_.size(), Eigen::Vector2d::Zero());
 }
 
@@ -326,10 +332,12 @@ std::array<shellNodeState, 4> shellSet::nodeStates
     {
         const int n = nodes[k];
         const int s = shellNode_[n];
-        states[k].x =
-            elements_[block][element].referencePoint(k) + dofs.vector3(U, n);
+        states[k].u = dofs.vector3(U, n);
         const Eigen::Vector2d d = increment(s, dofs, U);
         states[k].director = frames_[s].at(d(0), d(1));
+        // the committed director's change (zero until the first fold)
+        // and the increment's, each without cancellation
+        states[k].dV = (frames_[s].V - V0_[s]) + states[k].director.dVc;
     }
     return states;
 }

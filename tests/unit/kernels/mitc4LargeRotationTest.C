@@ -75,8 +75,11 @@ struct cantileverStrip
             for (int k = 0; k < 4; ++k)
             {
                 const int a = quads[e][k];
-                s[k].x = X[a] + q.segment<3>(5*a);
-                s[k].director = frames[a].at(q(5*a + 3), q(5*a + 4));
+                s[k] = shellNodeState::of
+                (
+                    vec3::UnitZ(), q.segment<3>(5*a),
+                    frames[a].at(q(5*a + 3), q(5*a + 4))
+                );
             }
             mitc4::vecQ fe;
             mitc4::matQ Ke;

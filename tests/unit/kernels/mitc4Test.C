@@ -184,8 +184,11 @@ struct testElement
         std::array<shellNodeState, 4> n;
         for (int k = 0; k < 4; ++k)
         {
-            n[k].x = X.row(k).transpose() + q.segment<3>(5*k);
-            n[k].director = frames[k].at(q(5*k + 3), q(5*k + 4));
+            n[k] = shellNodeState::of
+            (
+                V0.row(k).transpose(), q.segment<3>(5*k),
+                frames[k].at(q(5*k + 3), q(5*k + 4))
+            );
         }
         return n;
     }
@@ -432,10 +435,13 @@ TEST(mitc4, rigidRotationsProduceNoStrain)
             std::array<shellNodeState, 4> n;
             for (int k = 0; k < 4; ++k)
             {
-                n[k].x = R*T.X.row(k).transpose() + vec3(0.3, -1, 2);
-                n[k].director.V = R*T.V0.row(k).transpose();
-                n[k].director.dV.col(0) = R*T.frames[k].at(0, 0).dV.col(0);
-                n[k].director.dV.col(1) = R*T.frames[k].at(0, 0).dV.col(1);
+                const vec3 X0 = T.X.row(k).transpose();
+                const vec3 V0 = T.V0.row(k).transpose();
+                directorState d;
+                d.V = R*V0;
+                d.dV.col(0) = R*T.frames[k].at(0, 0).dV.col(0);
+                d.dV.col(1) = R*T.frames[k].at(0, 0).dV.col(1);
+                n[k] = shellNodeState::of(V0, R*X0 + vec3(0.3, -1, 2) - X0, d);
             }
             mitc4::vecQ f;
             el.compute(n, f, nullptr);
@@ -472,8 +478,7 @@ Eigen::MatrixXd flatStiffness
         {
             X.row(k) = points[q[k]].transpose();
             V0.row(k) << 0, 0, 1;
-            s[k].x = points[q[k]];
-            s[k].director = frame.at(0, 0);
+            s[k] = shellNodeState::of(vec3::UnitZ(), vec3::Zero(), frame.at(0, 0));
         }
         const mitc4 el
         (
