@@ -3,7 +3,9 @@
 // rotation increments into the nodal frames at every converged step:
 //   - Sze's cantilever under end shear (Sze, Liu & Lo 2004) within 1 %;
 //   - the strip rolled up into a full circle by an end moment, converging
-//     at second order.
+//     at second order;
+//   - small increments of an element far from the origin keep their
+//     digits (the strains formed from the changes).
 #include "mitc4.H"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -229,4 +231,42 @@ TEST(mitc4, cantileverRolledUpByAnEndMoment)
     // second order: a quarter with half the elements
     EXPECT_NEAR(excess[0]/excess[1], 4, 1);
     EXPECT_LT(worst[1], 0.01);
+}
+
+
+TEST(mitc4, smallIncrementsFarFromTheOriginKeepTheirDigits)
+{
+    // A flat element 30 wide, 300 from the origin, thickness 0.1 (a stiff
+    // thin shell), moved by a random q of size 1e-12: its internal force
+    // must match the initial tangent's K q to the relative order of q
+    // (the quadratic terms, 1e-12): 8e-14 observed; forming the
+    // strains as g.g - G.G gives 1e-5 (round-off eps |G|^2 against the
+    // increment G.dg). The element forms them from the changes (mitc4.H).
+    Eigen::Matrix<double, 4, 3> X, V0;
+    X << 0, 0, 0,  30, 0, 0,  30, 30, 0,  0, 30, 0;
+    X.rowwise() += Eigen::RowVector3d(300, -300, 300);
+    V0.rowwise() = Eigen::RowVector3d(0, 0, 1);
+    const mitc4 el
+    (
+        X, V0, Eigen::Vector4d::Constant(0.1), shellElastic{2e5, 0.3, 5.0/6.0},
+        2, false, false
+    );
+    const shellDirector frame = shellDirector::of(vec3::UnitZ());
+    std::srand(7);
+    const mitc4::vecQ q = 1e-12*mitc4::vecQ::Random();
+    std::array<shellNodeState, 4> s0, s;
+    for (int k = 0; k < 4; ++k)
+    {
+        s0[k] = shellNodeState::of(vec3::UnitZ(), vec3::Zero(), frame.at(0, 0));
+        s[k].u = q.segment<3>(5*k);
+        s[k].director = frame.at(q(5*k + 3), q(5*k + 4));
+        s[k].dV = s[k].director.dVc;    // the frame is the initial director
+    }
+    mitc4::vecQ f0, f;
+    mitc4::matQ K0;
+    el.compute(s0, f0, &K0);
+    el.compute(s, f, nullptr);
+    const double err = (f - K0*q).norm()/(K0*q).norm();
+    std::printf("    |f(q) - K0 q|/|K0 q| = %.2e for |q| = %.1e\n", err, q.norm());
+    EXPECT_LT(err, 1e-9);
 }
