@@ -173,6 +173,18 @@ bad "line load on the sheet's face" "line load on 'outer'.*not a side" \
     "sed -i 's/outer     { type traction; traction (0 0 -0.09); }/outer { type lineLoad; lineLoad (0 0 1); }/' 0/roof/D"
 bad "unknown shell element" "elementType.*MITC4 MITC4\\+" \
     "sed -i 's/^elementType .*/elementType     MITC4p;/' constant/roof/solidProperties"
+bad "point load off the mesh" "Point \\(1 2 3\\).*pointLoads.P.*is not a node.*mid-surface" \
+    "sed -i 's/^material/pointLoads { P { point (1 2 3); force (0 0 1); } }\\nmaterial/' constant/roof/solidProperties"
+bad "point load with neither force nor moment" "neither 'force' nor 'moment'" \
+    "sed -i 's/^material/pointLoads { P { point (0 0 25); } }\\nmaterial/' constant/roof/solidProperties"
+bad "point loads as a word" "pointLoads.*must be a dictionary" \
+    "sed -i 's/^material/pointLoads none;\\nmaterial/' constant/roof/solidProperties"
+bad "line moment on the sheet's face" "line moment on 'outer'.*not a side" \
+    "sed -i 's/outer     { type traction; traction (0 0 -0.09); }/outer { type lineMoment; lineMoment (0 1 0); }/' 0/roof/D"
+bad "oblique diaphragm" "normal.*a diaphragm's normal must be a coordinate axis" \
+    "sed -i 's/diaphragm { type fixedDisplacement; components (y z); }/diaphragm { type diaphragm; normal (1 1 0); }/' 0/roof/D"
+bad "pin with an unknown component" "Unknown component .w. in .*solidProperties.pin.A" \
+    "sed -i 's/^material/pin { A { point (0 0 25); components (w); } }\\nmaterial/' constant/roof/solidProperties"
 bad "sheet two cells thick" "not meshed one cell thick|no two opposite faces" \
     "sed -i 's/(\$n \$n 1)/(\$n \$n 2)/' system/roof/blockMeshDict"
 rm -rf "$work"

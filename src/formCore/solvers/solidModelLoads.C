@@ -31,6 +31,16 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
         }
     }
     for (const auto& l : nodalLoads) fext(l.first) += l.second(t);
+    for (const momentLoad& l : moments)
+    {
+        const vec3 mt = l.m(t);
+        for (const auto& nw : l.nodes)
+        {
+            const shellDirector& fr = shells->frame(nw.first);
+            fext(dofs.dof(nw.first, 3)) += nw.second*mt.dot(fr.V1);
+            fext(dofs.dof(nw.first, 4)) += nw.second*mt.dot(fr.V2);
+        }
+    }
     for (const auto& l : tractions)
     {
         const vec3 tv = inPlane(l.t(t), l.faceSet);
@@ -294,6 +304,72 @@ void solidModel::addNodalLoad
         }
         m.nodalLoads.emplace_back(m.dofs.dof(node, component), value);
     }
+}
+
+
+void solidModel::addMoment
+(
+    const std::vector<int>& nodes,
+    vectorTimeFunction m
+)
+{
+    impl& m_ = *impl_;
+    if (!m)
+    {
+        throw numericalError("solidModel::addMoment: no moment function");
+    }
+    impl::momentLoad load;
+    for (int node : nodes)
+    {
+        if
+        (
+            node < 0 || node >= m_.mesh.nNodes() || !m_.shells
+         || m_.shells->shellNode(node) < 0
+        )
+        {
+            throw inputError
+            (
+                "moment",
+                "a moment on node " + std::to_string(node) + ", which is"
+                " not a shell node (only shell nodes carry rotations)"
+            );
+        }
+        load.nodes.emplace_back(node, 1.0);
+    }
+    load.m = std::move(m);
+    m_.moments.push_back(std::move(load));
+}
+
+
+void solidModel::addLineMoment
+(
+    const std::string& faceSet,
+    vectorTimeFunction m
+)
+{
+    impl& m_ = *impl_;
+    std::map<int, double> weight;
+    for (const feFace& face : m_.faceSet(faceSet))
+    {
+        if (m_.nDim != 3 || face.nodes.size() != 2)
+        {
+            throw inputError
+            (
+                faceSet,
+                "a line moment on '" + faceSet + "', which is not a side"
+                " (edge) of a shell sheet"
+            );
+        }
+        const double L =
+            (m_.mesh.X.row(face.nodes[1]) - m_.mesh.X.row(face.nodes[0]))
+           .norm();
+        for (const int node : face.nodes) weight[node] += 0.5*L;
+    }
+    std::vector<int> nodes;
+    for (const auto& nw : weight) nodes.push_back(nw.first);
+    addMoment(nodes, std::move(m));
+    std::vector<std::pair<int, double>>& w = m_.moments.back().nodes;
+    for (auto& nw : w) nw.second = weight.at(nw.first);
 }
 
 

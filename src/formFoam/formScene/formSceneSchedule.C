@@ -211,24 +211,11 @@ void Foam::formScene::applyActions(const processStep& step, bool apply)
     }
     if (d.found("pin"))
     {
-        const dictionary& pd =
-            subDictOf(d, "pin", "{ <name> { point (x y z); components (x y); } }");
-        for (const entry& pe : pd)
-        {
-            const dictionary& p =
-                dictOf(pe, pd, "{ point (x y z); components (x y); }");
-            checkKeywords(p, {"point", "components"});
-            labelList comps;
-            for (const word& c : p.get<wordList>("components"))
-            {
-                comps.append(solidComponent(c, p, s.analysis()));
-            }
-            const point x = p.get<point>("point");
-            if (!apply) continue;
-            Info<< "    pin " << pe.keyword() << " at " << x
-                << " components " << comps << nl;
-            s.pin(x, comps, p);
-        }
+        s.pinPoints
+        (
+            subDictOf(d, "pin", "{ <name> { point (x y z); components (x y); } }"),
+            apply
+        );
     }
     if (d.found("prescribe"))
     {

@@ -121,8 +121,9 @@ Foam::wordList Foam::solidRegion::conditionTypes()
 {
     return
     {
-        "fixedDisplacement", "clamped", "symmetryPlane", "rigidMotion",
-        "traction", "lineLoad", "pressure", "free"
+        "fixedDisplacement", "clamped", "symmetryPlane", "diaphragm",
+        "rigidMotion",
+        "traction", "lineLoad", "lineMoment", "pressure", "free"
     };
 }
 
@@ -169,7 +170,10 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
     checkKeywords
     (
         properties_,
-        {"analysisType", "elementType", "material", "bodyForce", "shell"}
+        {
+            "analysisType", "elementType", "material", "bodyForce", "shell",
+            "pointLoads", "pin"
+        }
     );
     const word analysisName = properties_.get<word>("analysisType");
     try
@@ -303,7 +307,22 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
         if (!onAxis.empty()) model_->addConstraint(onAxis, 0);
     }
     readBoundaryConditions();
+    readPointLoads();
     model_->finalise();
+    if (properties_.found("pin"))
+    {
+        // Points held from the start (a rigid-body mode of a model with
+        // symmetry planes): their displacement at t = 0, zero
+        pinPoints
+        (
+            subDictOf
+            (
+                properties_, "pin",
+                "{ <name> { point (x y z); components (x y); } }"
+            ),
+            true
+        );
+    }
 
     // Body force per unit mass (gravity), a Function1 of time
     if (properties_.found("bodyForce"))
@@ -441,7 +460,7 @@ Foam::scalar Foam::solidRegion::displacementAt
     if (model_->shells())
     {
         // Shells: the displacement of the mid-surface node at the point
-        return model_->displacement()(shellNodeAt(pt, dict), component);
+        return model_->displacement()(nodeAt(pt, dict), component);
     }
     const form::pointLocation loc =
         form::locatePoint(fe, feMesh_->toFe(pt), 1e-6);

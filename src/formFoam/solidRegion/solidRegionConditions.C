@@ -2,8 +2,10 @@
   formFoam: implicit finite-element forming with fluid-structure interaction
 -------------------------------------------------------------------------------
     solidRegion: boundary conditions (solidRegion.H): 0/<region>/D read and
-    applied per patch (fixedDisplacement, rigidMotion, traction, pressure,
-    free), and the process-step actions on constraints (release, hold, pin)
+    applied per patch (fixedDisplacement, clamped, symmetryPlane,
+    diaphragm, rigidMotion, traction, lineLoad, lineMoment, pressure,
+    free), and the process-step actions on patches (release, hold); the
+    inputs at single nodes are in solidRegionPoints.C
 \*---------------------------------------------------------------------------*/
 #include "solidRegion.H"
 #include "shellSet.H"
@@ -186,41 +188,33 @@ void Foam::solidRegion::hold
 }
 
 
-void Foam::solidRegion::pin
+Foam::label Foam::solidRegion::axisOf
 (
-    const point& p,
-    const labelList& components,
+    const vector& n,
+    const char* what,
     const dictionary& dict
-)
+) const
 {
-    const form::feMesh& fe = feMesh_->feMesh();
-    const form::vecX x = feMesh_->toFe(p);
-    int best = -1;
-    double dmin = GREAT;
-    for (int n = 0; n < fe.nNodes(); ++n)
+    const label nDim = feMesh_->feMesh().nDim;
+    label c = -1;
+    for (direction i = 0; i < 3; ++i)
     {
-        const double d = (fe.X.row(n).transpose() - x).norm();
-        if (d < dmin) { dmin = d; best = n; }
+        const vector e(i == 0, i == 1, i == 2);
+        if (mag(n) > 0 && mag((n/mag(n)) ^ e) < 1e-9) c = i;
     }
-    const double size =
-        (fe.X.colwise().maxCoeff() - fe.X.colwise().minCoeff()).norm();
-    if (best < 0 || dmin > 1e-6*size)
+    if
+    (
+        c < 0 || c >= nDim
+     || feMesh_->proj() == polyMeshToFeMesh::projection::wedge
+    )
     {
         FatalIOErrorInFunction(dict)
-            << "No node of solid region '" << name_ << "' at point " << p
-            << " (nearest at distance " << dmin << ") in " << dict.name()
-            << exit(FatalIOError);
+            << "Entry 'normal' in " << dict.name() << ": " << n
+            << "; " << what << " normal must be a coordinate axis"
+            << " of the FE space (x, y" << (nDim == 3 ? ", z" : "")
+            << ")" << exit(FatalIOError);
     }
-    const form::vecX U = model_->U();
-    const form::dofMap dofs = model_->dofs();
-    for (const label c : components)
-    {
-        model_->addNodalConstraint
-        (
-            {best}, c,
-            [U, dofs, c](int node, double) { return U(dofs.dof(node, c)); }
-        );
-    }
+    return c;
 }
 
 
@@ -276,25 +270,39 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
             model_->addConstraint(shellNodes, 4);
         }
     }
+    else if (type == "diaphragm")
+    {
+        // A rigid diaphragm in the plane normal to n: the displacements in
+        // that plane held; on shell nodes the director does not turn about
+        // n (it stays in its plane through n), as the diaphragm ends of
+        // the pinched cylinder and the Scordelis-Lo roof
+        checkKeywords(pd, {"type", "normal", "value"});
+        const vector n = pd.get<vector>("normal");
+        const label c = axisOf(n, "a diaphragm's", pd);
+        for (label i = 0; i < fe.nDim; ++i)
+        {
+            if (i != c) model_->addConstraint(nodes, i);
+        }
+        const std::vector<int> shellNodes = shellNodesOf(nodes);
+        try
+        {
+            model_->alignShellFrames
+            (
+                shellNodes, form::vec3(n.x(), n.y(), n.z())
+            );
+        }
+        catch (const form::inputError& err)
+        {
+            fatalInput(pd, err);
+        }
+        model_->addConstraint(shellNodes, 3);
+    }
     else if (type == "symmetryPlane")
     {
         // u . n = 0; on shell nodes the director turns only about n
         checkKeywords(pd, {"type", "normal", "value"});
         const vector n = pd.get<vector>("normal");
-        label c = -1;
-        for (direction i = 0; i < 3; ++i)
-        {
-            const vector e(i == 0, i == 1, i == 2);
-            if (mag(n) > 0 && mag((n/mag(n)) ^ e) < 1e-9) c = i;
-        }
-        if (c < 0 || c >= fe.nDim || feMesh_->proj() == polyMeshToFeMesh::projection::wedge)
-        {
-            FatalIOErrorInFunction(pd)
-                << "Entry 'normal' in " << pd.name() << ": " << n
-                << "; a symmetry plane's normal must be a coordinate axis"
-                << " of the FE space (x, y" << (fe.nDim == 3 ? ", z" : "")
-                << ")" << exit(FatalIOError);
-        }
+        const label c = axisOf(n, "a symmetry plane's", pd);
         model_->addConstraint(nodes, c);
         // Shell nodes: the frame's V1 along n, beta (the rotation about
         // the other tangent axis) held; a node on two symmetry planes
@@ -369,6 +377,32 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
                 [fl](double t)
                 {
                     const vector v = fl->value(t);
+                    return form::vec3(v.x(), v.y(), v.z());
+                }
+            );
+        }
+        catch (const form::inputError& err)
+        {
+            fatalInput(pd, err);
+        }
+    }
+    else if (type == "lineMoment")
+    {
+        // A moment per unit length (a vector) on the sides of a shell
+        // sheet, acting on the rotations of the edge's nodes
+        checkKeywords(pd, {"type", "lineMoment", "value"});
+        std::shared_ptr<Function1<vector>> ml
+        (
+            Function1<vector>::New("lineMoment", pd).ptr()
+        );
+        try
+        {
+            model_->addLineMoment
+            (
+                patch,
+                [ml](double t)
+                {
+                    const vector v = ml->value(t);
                     return form::vec3(v.x(), v.y(), v.z());
                 }
             );

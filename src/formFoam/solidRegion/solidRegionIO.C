@@ -467,38 +467,6 @@ Foam::scalar Foam::solidRegion::shellThickness
 }
 
 
-Foam::label Foam::solidRegion::shellNodeAt
-(
-    const point& pt,
-    const dictionary& dict
-) const
-{
-    const form::feMesh& fe = feMesh_->feMesh();
-    const form::vecX x = feMesh_->toFe(pt);
-    int nearest = -1;
-    double d2 = 0;
-    for (int n = 0; n < fe.nNodes(); ++n)
-    {
-        const double d = (fe.X.row(n).transpose() - x).squaredNorm();
-        if (nearest < 0 || d < d2)
-        {
-            nearest = n;
-            d2 = d;
-        }
-    }
-    const double size = fe.X.cwiseAbs().maxCoeff();
-    if (nearest < 0 || std::sqrt(d2) > 1e-6*max(size, 1.0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Point " << pt << " in " << dict.name() << " is not a"
-            << " node of the mid-surface of the shell region '" << name_
-            << "' (nearest node at distance " << std::sqrt(d2) << ");"
-            << " shell results are read at nodes" << exit(FatalIOError);
-    }
-    return nearest;
-}
-
-
 Foam::scalar Foam::solidRegion::directorRotation
 (
     const point& pt,
@@ -513,7 +481,7 @@ Foam::scalar Foam::solidRegion::directorRotation
             << name_ << "' has no shell elements (elementType "
             << elementType_ << ")" << exit(FatalIOError);
     }
-    const label node = shellNodeAt(pt, dict);
+    const label node = nodeAt(pt, dict);
     const form::vec3 V0 = shells->initialDirector(node);
     const form::vec3 V = shells->director(node, model_->dofs(), model_->U());
     return std::atan2(V0.cross(V).norm(), V0.dot(V));

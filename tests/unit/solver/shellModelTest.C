@@ -116,15 +116,16 @@ TEST(shellModel, szeCantileverUnderEndShear)
 TEST(shellModel, stripRolledUpIntoACircle)
 {
     // Sze, Liu & Lo 2004: L = 12, b = 1, h = 0.1, E = 1.2e6, nu = 0, end
-    // moment M_max = 2 pi EI/L rolls the strip into a full circle; the
-    // moment acts on beta (about the frames' V2 = y, which the rotation
-    // about y keeps). 32 elements: the tip within 0.0074 L (kernel test)
+    // moment M_max = 2 pi EI/L rolls the strip into a full circle: a line
+    // moment -M_max/b y on the tip edge (addLineMoment), which acts on beta
+    // (about the frames' V2 = y, which the rotation about y keeps). 32
+    // elements: the tip within 0.0074 L (kernel test)
     const double L = 12, E = 1.2e6, h = 0.1;
     const double EI = E*h*h*h/12, Mmax = 2*M_PI*EI/L;
     solidModel model(strip(32, L, 1, h), analysisType::solid3D, elastic(E, 0));
     clamp(model);
     const std::vector<int>& tip = model.mesh().nodeSets.at("tip");
-    model.addNodalLoad(tip, 4, [=](double t) { return -0.5*Mmax*t; });
+    model.addLineMoment("tip", [=](double t) { return vec3(0, -Mmax*t, 0); });
     model.finalise();
     // The load on beta is conjugate to the rotation increment about V2,
     // a fixed-axis moment only while alpha = 0: past about 290 degrees
@@ -570,5 +571,7 @@ TEST(shellModel, inputErrorsNameTheirEntry)
         expectInput([&] { model.addConstraint({6}, 3); }, "component");
         expectInput([&] { model.addNodalLoad({6}, 4, [](double) { return 1.0; }); }, "component");
         EXPECT_NO_THROW(model.addConstraint({5}, 4));
+        expectInput([&] { model.addMoment({6}, [](double) { return vec3(1, 0, 0); }); }, "moment");
+        EXPECT_NO_THROW(model.addMoment({5}, [](double) { return vec3(1, 0, 0); }));
     }
 }

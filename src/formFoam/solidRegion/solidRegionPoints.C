@@ -1,0 +1,181 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    solidRegion (solidRegion.H): inputs at single nodes, located by a
+    point of the polyMesh space (shells: a node of the mid-surface):
+    point forces and moments (solidProperties pointLoads), components
+    held at a node (solidProperties pin, and the pin of process steps).
+\*---------------------------------------------------------------------------*/
+#include "solidRegion.H"
+#include "shellSet.H"
+#include "dictionaryChecks.H"
+#include "Function1.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::solidRegion::nodeAt
+(
+    const point& pt,
+    const dictionary& dict
+) const
+{
+    const form::feMesh& fe = feMesh_->feMesh();
+    const form::vecX x = feMesh_->toFe(pt);
+    int nearest = -1;
+    double d2 = 0;
+    for (int n = 0; n < fe.nNodes(); ++n)
+    {
+        const double d = (fe.X.row(n).transpose() - x).squaredNorm();
+        if (nearest < 0 || d < d2)
+        {
+            nearest = n;
+            d2 = d;
+        }
+    }
+    const double size =
+        (fe.X.colwise().maxCoeff() - fe.X.colwise().minCoeff()).norm();
+    if (nearest < 0 || std::sqrt(d2) > 1e-6*size)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Point " << pt << " in " << dict.name() << " is not a node"
+            << " of solid region '" << name_ << "'"
+            << (model_->shells() ? " (shells: a node of the mid-surface)" : "")
+            << "; the nearest node is at distance " << std::sqrt(d2)
+            << exit(FatalIOError);
+    }
+    return nearest;
+}
+
+
+void Foam::solidRegion::pin
+(
+    const point& p,
+    const labelList& components,
+    const dictionary& dict
+)
+{
+    const label best = nodeAt(p, dict);
+    const form::vecX U = model_->U();
+    const form::dofMap dofs = model_->dofs();
+    for (const label c : components)
+    {
+        model_->addNodalConstraint
+        (
+            {best}, c,
+            [U, dofs, c](int node, double) { return U(dofs.dof(node, c)); }
+        );
+    }
+}
+
+
+void Foam::solidRegion::pinPoints(const dictionary& pd, bool apply)
+{
+    for (const entry& pe : pd)
+    {
+        const dictionary& p =
+            dictOf(pe, pd, "{ point (x y z); components (x y); }");
+        checkKeywords(p, {"point", "components"});
+        labelList comps;
+        for (const word& c : p.get<wordList>("components"))
+        {
+            comps.append(solidComponent(c, p, analysis_));
+        }
+        const point x = p.get<point>("point");
+        if (!apply) continue;
+        Info<< "    pin " << pe.keyword() << " at " << x
+            << " components " << comps << nl;
+        pin(x, comps, p);
+    }
+}
+
+
+void Foam::solidRegion::readPointLoads()
+{
+    // solidProperties pointLoads { <name> { point p; force f; moment m; } }:
+    // dead forces (and, on shell nodes, moments) at the node at p (a node
+    // of the mid-surface for shells), each a Function1 of time
+    if (!properties_.found("pointLoads")) return;
+    const dictionary& loads = subDictOf
+    (
+        properties_, "pointLoads", "{ <name> { point (x y z); force ...; } }"
+    );
+    const form::feMesh& fe = feMesh_->feMesh();
+    if (feMesh_->proj() == polyMeshToFeMesh::projection::wedge)
+    {
+        FatalIOErrorInFunction(loads)
+            << "Entry 'pointLoads' in " << loads.name() << ": a point of an"
+            << " axisymmetric (wedge) region is a ring; give a traction on"
+            << " a patch instead" << exit(FatalIOError);
+    }
+    for (const entry& e : loads)
+    {
+        const dictionary& d = dictOf(e, loads, "{ point (x y z); force ...; }");
+        checkKeywords(d, {"point", "force", "moment"});
+        if (!d.found("force") && !d.found("moment"))
+        {
+            FatalIOErrorInFunction(d)
+                << "Point load " << d.name() << " has neither 'force' nor"
+                << " 'moment'" << exit(FatalIOError);
+        }
+        const point p = d.get<point>("point");
+        const label node = nodeAt(p, d);
+        if (d.found("force"))
+        {
+            std::shared_ptr<Function1<vector>> f
+            (
+                Function1<vector>::New("force", d).ptr()
+            );
+            // Components in the FE space: x y z, or x y of a plane mesh
+            // (whose z must be zero)
+            const fileName file = d.name();
+            const bool plane = fe.nDim == 2;
+            for (label c = 0; c < fe.nDim; ++c)
+            {
+                model_->addNodalLoad
+                (
+                    {int(node)}, c,
+                    [f, c, plane, file](double t)
+                    {
+                        const vector v = f->value(t);
+                        if (plane && v.z() != 0)
+                        {
+                            FatalErrorInFunction
+                                << "Entry 'force' in " << file << ": " << v
+                                << " at t = " << t << " has an out-of-plane"
+                                << " (z) component in a 2D analysis"
+                                << exit(FatalError);
+                        }
+                        return v[c];
+                    }
+                );
+            }
+        }
+        if (d.found("moment"))
+        {
+            std::shared_ptr<Function1<vector>> m
+            (
+                Function1<vector>::New("moment", d).ptr()
+            );
+            try
+            {
+                model_->addMoment
+                (
+                    {int(node)},
+                    [m](double t)
+                    {
+                        const vector v = m->value(t);
+                        return form::vec3(v.x(), v.y(), v.z());
+                    }
+                );
+            }
+            catch (const form::inputError& err)
+            {
+                fatalInput(d, err);
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //
