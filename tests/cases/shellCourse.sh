@@ -17,6 +17,9 @@
 #     solved through solidModel directly (shellBenchmarksTest.C: 13.7139,
 #     17.3535), the pinched cylinder and the twisted beam as there (0.9863
 #     and 0.9978 of the reference on the same meshes, to 1e-4);
+#   - point moments (pointLoads moment) equal to the line moment they
+#     lump (the roll-up), and the half-moment tip of the roll-up at
+#     (-12, 24/pi) (the exact half circle) within 1 %;
 #   - a linear benchmark converges below the round-off floor of its stiff
 #     thin shell: the pinched cylinder's step is accepted (the strains
 #     from the displacement changes, mitc4.H).
@@ -47,4 +50,16 @@ checkClose "slit plate w_A as the model directly" "$(v slitAnnularPlateAPlus)" 1
 checkClose "slit plate w_B as the model directly" "$(v slitAnnularPlateBPlus)" 17.3535 1e-4
 checkClose "pinched cylinder as the model directly" "$(v pinchedCylinderW)" "$(awk 'BEGIN { print 0.9863*1.8248e-5 }')" 1e-4
 checkClose "twisted beam as the model directly" "$(v twistedBeamInPlane)" "$(awk 'BEGIN { print 0.9978*5.424e-3 }')" 1e-4
+
+# Point moments: the roll-up's line moment given as two point moments of
+# half of it at the tip nodes, the same run to round-off
+r=$c/course/rollUpTipX_MITC4_32
+(
+    cd "$r" && ./Allclean > /dev/null && \
+    sed -i 's/tip    { type lineMoment;.*/tip    { type free; }/' 0/shell/D && \
+    sed -i 's/^material/pointLoads\n{\n    a { point (12 0 0); moment table ((0 (0 0 0)) (1 (0 -26.179938779915 0))); }\n    b { point (12 1 0); moment table ((0 (0 0 0)) (1 (0 -26.179938779915 0))); }\n}\nmaterial/' constant/shell/solidProperties && \
+    ./Allrun > log.Allrun 2>&1
+) || fail "roll-up by point moments (see $r/log.formFoam)"
+checkClose "roll-up by point moments: the line moment's tip" "$(summaryValue "$r" tipX)" "$(v rollUpTipX)" 1e-9
+checkClose "roll-up by point moments: at half the moment" "$(summaryValue "$r" tipZ50)" 7.6394 0.01
 rm -rf "$c"

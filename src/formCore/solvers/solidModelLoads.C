@@ -17,6 +17,30 @@ Description
 namespace form
 {
 
+const std::vector<feFace>& solidModel::impl::shellEdges
+(
+    const std::string& name,
+    const std::string& what,
+    const std::string& hint
+) const
+{
+    const std::vector<feFace>& faces = faceSet(name);
+    for (const feFace& face : faces)
+    {
+        if (nDim != 3 || face.nodes.size() != 2)
+        {
+            throw inputError
+            (
+                name,
+                what + " on '" + name + "', which is not a side (edge) of"
+                " a shell sheet" + hint
+            );
+        }
+    }
+    return faces;
+}
+
+
 void solidModel::impl::assembleExternal(double t, bool wantTangent)
 {
     matX X, u, K;
@@ -253,18 +277,7 @@ void solidModel::addTraction(const std::string& faceSet, vectorTimeFunction t)
 void solidModel::addLineLoad(const std::string& faceSet, vectorTimeFunction f)
 {
     impl& m = *impl_;
-    for (const feFace& face : m.faceSet(faceSet))
-    {
-        if (m.nDim != 3 || face.nodes.size() != 2)
-        {
-            throw inputError
-            (
-                faceSet,
-                "a line load on '" + faceSet + "', which is not a side"
-                " (edge) of a shell sheet: use a traction"
-            );
-        }
-    }
+    m.shellEdges(faceSet, "a line load", ": use a traction");
     addTraction(faceSet, std::move(f));
     m.tractions.back().perLength = true;
 }
@@ -349,17 +362,8 @@ void solidModel::addLineMoment
 {
     impl& m_ = *impl_;
     std::map<int, double> weight;
-    for (const feFace& face : m_.faceSet(faceSet))
+    for (const feFace& face : m_.shellEdges(faceSet, "a line moment", ""))
     {
-        if (m_.nDim != 3 || face.nodes.size() != 2)
-        {
-            throw inputError
-            (
-                faceSet,
-                "a line moment on '" + faceSet + "', which is not a side"
-                " (edge) of a shell sheet"
-            );
-        }
         const double L =
             (m_.mesh.X.row(face.nodes[1]) - m_.mesh.X.row(face.nodes[0]))
            .norm();

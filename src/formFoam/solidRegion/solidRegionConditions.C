@@ -188,6 +188,24 @@ void Foam::solidRegion::hold
 }
 
 
+form::vectorTimeFunction Foam::solidRegion::vectorFunction
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    std::shared_ptr<Function1<vector>> f
+    (
+        Function1<vector>::New(key, dict).ptr()
+    );
+    return [f](double t)
+    {
+        const vector v = f->value(t);
+        return form::vec3(v.x(), v.y(), v.z());
+    };
+}
+
+
 Foam::label Foam::solidRegion::axisOf
 (
     const vector& n,
@@ -365,21 +383,9 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
     {
         // A force per unit length on the sides of a shell sheet
         checkKeywords(pd, {"type", "lineLoad", "value"});
-        std::shared_ptr<Function1<vector>> fl
-        (
-            Function1<vector>::New("lineLoad", pd).ptr()
-        );
         try
         {
-            model_->addLineLoad
-            (
-                patch,
-                [fl](double t)
-                {
-                    const vector v = fl->value(t);
-                    return form::vec3(v.x(), v.y(), v.z());
-                }
-            );
+            model_->addLineLoad(patch, vectorFunction(pd, "lineLoad"));
         }
         catch (const form::inputError& err)
         {
@@ -391,21 +397,9 @@ void Foam::solidRegion::applyCondition(const word& patch, const dictionary& pd)
         // A moment per unit length (a vector) on the sides of a shell
         // sheet, acting on the rotations of the edge's nodes
         checkKeywords(pd, {"type", "lineMoment", "value"});
-        std::shared_ptr<Function1<vector>> ml
-        (
-            Function1<vector>::New("lineMoment", pd).ptr()
-        );
         try
         {
-            model_->addLineMoment
-            (
-                patch,
-                [ml](double t)
-                {
-                    const vector v = ml->value(t);
-                    return form::vec3(v.x(), v.y(), v.z());
-                }
-            );
+            model_->addLineMoment(patch, vectorFunction(pd, "lineMoment"));
         }
         catch (const form::inputError& err)
         {

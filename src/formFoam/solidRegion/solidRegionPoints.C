@@ -153,21 +153,9 @@ void Foam::solidRegion::readPointLoads()
         }
         if (d.found("moment"))
         {
-            std::shared_ptr<Function1<vector>> m
-            (
-                Function1<vector>::New("moment", d).ptr()
-            );
             try
             {
-                model_->addMoment
-                (
-                    {int(node)},
-                    [m](double t)
-                    {
-                        const vector v = m->value(t);
-                        return form::vec3(v.x(), v.y(), v.z());
-                    }
-                );
+                model_->addMoment({int(node)}, vectorFunction(d, "moment"));
             }
             catch (const form::inputError& err)
             {
