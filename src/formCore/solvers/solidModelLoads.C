@@ -169,6 +169,9 @@ void solidModel::addConstraint
 )
 {
     impl& m = *impl_;
+    // (no nodes: nothing to hold, e.g. the rotations a symmetry plane
+    // holds on the shell nodes of a region that has none)
+    if (nodes.empty()) return;
     const int nComponents = m.shells ? shellSet::nodeDofs : m.nDim;
     if (component < 0 || component >= nComponents)
     {
