@@ -422,6 +422,20 @@ void contactModel::setShells(const shellSet* shells)
 }
 
 
+void contactModel::setShellThickness(const std::vector<double>& t)
+{
+    impl& m = *impl_;
+    for (impl::pairData& p : m.pairs)
+    {
+        for (std::size_t a = 0; a < p.offset.size(); ++a)
+        {
+            const double h = 0.5*t[p.nodes[a]];
+            p.offset[a] = p.offset[a] < 0 ? -h : h;
+        }
+    }
+}
+
+
 // Quasi-static approach of a force-controlled tool that touches nothing:
 // translate it along e until the first contactor node ahead of it touches.
 // For a node with normal n and gap g, a move by dz along e closes the gap

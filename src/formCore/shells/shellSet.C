@@ -408,6 +408,7 @@ elementResult shellSet::result
         r.thicknessStretch = q
           ? std::min(r.thicknessStretch, o.thicknessStretch)
           : o.thicknessStretch;
+        r.meanThicknessStretch += (o.thicknessStretch - 1)/nq;
     }
     r.pressure = -r.cauchy.trace()/3;
     return r;

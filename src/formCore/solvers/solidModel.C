@@ -895,6 +895,7 @@ void solidModel::restore(const savedState& s)
     }
     setReleaseLoads(s.releaseLoads);
     if (m.shells) m.shells->setState(s.shells);
+    updateShellContactThickness();
 }
 
 
@@ -905,6 +906,7 @@ void solidModel::commit()
     m.Ucommitted = m.U;
     m.committed = m.trial;
     for (const auto& b : m.coupled) b->commit(m.U);
+    updateShellContactThickness();
 }
 
 

@@ -192,4 +192,41 @@ std::vector<elementResult> solidModel::elementResults() const
     return results;
 }
 
+std::vector<double> solidModel::shellNodeThickness() const
+{
+    const impl& m = *impl_;
+    std::vector<double> t(m.mesh.nNodes(), 0.0);
+    if (!m.shells) return t;
+    std::vector<double> stretch(m.mesh.nNodes(), 0.0);
+    std::vector<int> count(m.mesh.nNodes(), 0);
+    for (int e = 0; e < int(m.elemBlock.size()); ++e)
+    {
+        const int b = m.elemBlock[e];
+        if (m.blocks[b].kernel) continue;
+        const double s = m.shells->result
+        (
+            b, m.elemLocal[e], m.dofs, m.U, m.trial[e]
+        ).meanThicknessStretch;
+        const elementBlock& blk = m.mesh.blocks[b];
+        const int* nodes = blk.nodes(m.elemLocal[e]);
+        for (int k = 0; k < blk.nodesPerElement; ++k)
+        {
+            stretch[nodes[k]] += s;
+            ++count[nodes[k]];
+        }
+    }
+    for (int n = 0; n < m.mesh.nNodes(); ++n)
+    {
+        if (count[n]) t[n] = m.shells->thickness(n)*stretch[n]/count[n];
+    }
+    return t;
+}
+
+
+void solidModel::updateShellContactThickness()
+{
+    impl& m = *impl_;
+    if (m.contact && m.shells) m.contact->setShellThickness(shellNodeThickness());
+}
+
 } // namespace form

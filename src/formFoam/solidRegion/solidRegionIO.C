@@ -406,6 +406,8 @@ bool Foam::solidRegion::readState(const word& timeName)
                 << exit(FatalError);
         }
     }
+    // Shell contact: the offsets follow the restored state's thickness
+    model_->updateShellContactThickness();
     // Releases begun before the restart: their loads (written only when
     // something was released); formScene then re-applies the release
     // actions of those steps without new loads

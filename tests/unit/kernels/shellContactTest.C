@@ -12,6 +12,7 @@
 //     second derivatives it fails at 1.5e-4);
 //   - the contact point is the face's: a sheet whose top face just
 //     touches a plane has zero gap there, the mid-surface a gap of t/2;
+//     thinned (setShellThickness), the face moves with the thickness;
 //   - pairs on a shell's edge, on patches covering both faces, and shells
 //     against deformable targets are input errors naming the pair.
 #include "contactModel.H"
@@ -222,6 +223,15 @@ TEST(shellContact, theContactPointIsOnTheFace)
     {
         EXPECT_NEAR(n.gap, 0, 1e-14) << n.node;
         EXPECT_NEAR(n.x(2), 1.05, 1e-14) << n.node;
+    }
+    // The sheet thinned to 0.08 (setShellThickness, as solidModel does at
+    // a commit): the top face at 1.04, a gap of 0.01 to the plane
+    cm.setShellThickness(std::vector<double>(mesh.nNodes(), 0.08));
+    cm.evaluate(1, U, fext, r, nullptr);
+    for (const contactNodeResult& n : cm.pairResults("pair", U, 1))
+    {
+        EXPECT_NEAR(n.gap, 0.01, 1e-14) << n.node;
+        EXPECT_NEAR(n.x(2), 1.04, 1e-14) << n.node;
     }
     // Without the shells given, a shell pair is refused at evaluation
     contactModel bare
