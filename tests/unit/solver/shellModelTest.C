@@ -283,14 +283,7 @@ TEST(shellModel, plasticPlateStripInCylindricalBending)
     // Without hardening M(k) would tend to 2/sqrt(3) (plane strain) x
     // 0.9448 (the 5-point rule of |z|) x b h^2 sigma_y / 4.
     const double E = 2e5, nu = 0.3, sy = 250, L = 1, b = 0.2, h = 0.02;
-    materialInput in;
-    in.words["type"] = "elastoPlastic";
-    in.scalars = {{"E", E}, {"nu", nu}};
-    in.dicts["hardening"].path = "hardening";
-    in.dicts["hardening"].words["type"] = "linear";
-    in.dicts["hardening"].scalars = {{"sigmaY0", sy}, {"H", 2000}};
-    std::map<std::string, std::shared_ptr<material>> mats;
-    mats["sheet"] = material::New("elastoPlastic", in);
+    const auto mats = test::linearHardeningSheet(E, nu, sy, 2000);
     const double Mp = b*h*h*sy/4;
     // The largest relative deviation from the section's M(k) over the
     // loading with n elements along the strip; the final M / M_p
@@ -311,7 +304,7 @@ TEST(shellModel, plasticPlateStripInCylindricalBending)
         model.finalise();
 
         // The reference section: the material at the 5 points
-        const planeStressMaterial law(mats["sheet"]);
+        const planeStressMaterial law(mats.at("sheet"));
         std::vector<double> zq, wq;
         if (lobatto) gaussLobatto1D(5, zq, wq);
         else gaussLegendre1D(5, zq, wq);

@@ -37,12 +37,7 @@ const double Ep = E/(1 - nu*nu);
 
 std::shared_ptr<material> elastoPlastic(const materialInput& hardening)
 {
-    materialInput in;
-    in.words["type"] = "elastoPlastic";
-    in.scalars = {{"E", E}, {"nu", nu}};
-    in.dicts["hardening"] = hardening;
-    in.dicts["hardening"].path = "hardening";
-    return material::New("elastoPlastic", in);
+    return test::elastoPlastic(E, nu, hardening);
 }
 
 //- Bend the strip to radius R in 10 steps, release in 5: the final

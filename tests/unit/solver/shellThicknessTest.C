@@ -20,14 +20,7 @@ using test::strip;
 
 TEST(shellThickness, followsThePlasticStretch)
 {
-    materialInput in;
-    in.words["type"] = "elastoPlastic";
-    in.scalars = {{"E", 2e5}, {"nu", 0.3}};
-    in.dicts["hardening"].path = "hardening";
-    in.dicts["hardening"].words["type"] = "linear";
-    in.dicts["hardening"].scalars = {{"sigmaY0", 250}, {"H", 2000}};
-    std::map<std::string, std::shared_ptr<material>> mats;
-    mats["sheet"] = material::New("elastoPlastic", in);
+    const auto mats = test::linearHardeningSheet(2e5, 0.3, 250, 2000);
     const double t0 = 0.02;
     solidModel model(strip(4, 1, 0.2, t0), analysisType::solid3D, mats);
     const std::vector<int>& clamp = model.mesh().nodeSets.at("clamp");
