@@ -188,4 +188,21 @@ std::vector<quadraturePoint3D> gaussLegendreHex(int n)
     return pts;
 }
 
+
+std::vector<quadraturePoint2D> gaussTriangle7()
+{
+    // Dunavant (1985) degree 5; Hammer, Marlowe & Stroud (1956): the
+    // centroid and two orbits of three points, weights summing to the
+    // triangle's area 1/2
+    const double q = std::sqrt(15.0);
+    const double a1 = (6 - q)/21, b1 = (9 + 2*q)/21, w1 = (155 - q)/2400;
+    const double a2 = (6 + q)/21, b2 = (9 - 2*q)/21, w2 = (155 + q)/2400;
+    return
+    {
+        {1.0/3, 1.0/3, 9.0/80},
+        {a1, a1, w1}, {b1, a1, w1}, {a1, b1, w1},
+        {a2, a2, w2}, {b2, a2, w2}, {a2, b2, w2}
+    };
+}
+
 } // namespace form

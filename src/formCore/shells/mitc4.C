@@ -162,32 +162,24 @@ void mitc4::addSecond
     matQ& K
 )
 {
-    const matQ DD = b.D[i].transpose()*b.D[j];
-    K += w*(DD + DD.transpose());
-    for (int k = 0; k < 4; ++k)
-    {
-        const std::array<vec3, 3>& d2V = nodes[k].director.d2V;
-        const vec3 v = b.c[j][k]*b.g[i] + b.c[i][k]*b.g[j];
-        const double aa = v.dot(d2V[0]), ab = v.dot(d2V[1]), bb = v.dot(d2V[2]);
-        const int o = 5*k + 3;
-        K(o, o) += w*aa;
-        K(o, o + 1) += w*ab;
-        K(o + 1, o) += w*ab;
-        K(o + 1, o + 1) += w*bb;
-    }
+    addShellSecond<4, nDofs>
+    (
+        b, i, j, w,
+        {&nodes[0].director, &nodes[1].director, &nodes[2].director,
+         &nodes[3].director},
+        {3, 8, 13, 18}, K
+    );
 }
 
 
 namespace
 {
 
-//- The value and first derivative of g_i . g_j - G_i . G_j at a basis,
-//  the value from the changes dg (shellNodeState)
-template<class Basis, class Row>
-double product(const Basis& b, int i, int j, Row&& dP)
+//- P_ij and its derivative (shellBasis.H)
+template<class Row>
+double product(const shellBasis<4, mitc4::nDofs>& b, int i, int j, Row&& dP)
 {
-    dP = b.g[i].transpose()*b.D[j] + b.g[j].transpose()*b.D[i];
-    return b.G[i].dot(b.dg[j]) + b.dg[i].dot(b.G[j]) + b.dg[i].dot(b.dg[j]);
+    return shellProduct(b, i, j, dP);
 }
 
 //- The tying points: A (0, 1), B (0, -1) for e_rt; C (1, 0), D (-1, 0)
@@ -264,46 +256,7 @@ void mitc4::localFrame
         J.col(1) += dN(k, 1)*(X0 + h*V0);
         J.col(2) += 0.5*a_(k)*N(k)*V0;
     }
-    detJ = J.determinant();
-    if (!(detJ > 0))
-    {
-        throw numericalError
-        (
-            "mitc4: the element's initial geometry is degenerate or"
-            " inverted (det J = " + std::to_string(detJ) + ")"
-        );
-    }
-    const mat3 Ginv = J.inverse();      // rows: contravariant G^i
-    const vec3 e3 = J.col(0).cross(J.col(1)).normalized();
-    const vec3 e1 = J.col(0).normalized();
-    const vec3 e2 = e3.cross(e1);
-    Q.col(0) = e1;
-    Q.col(1) = e2;
-    Q.col(2) = e3;
-    mat3 m;                             // m(i, a) = G^i . e_a
-    for (int i = 0; i < 3; ++i)
-    {
-        const vec3 Gi = Ginv.row(i).transpose();
-        m(i, 0) = Gi.dot(e1);
-        m(i, 1) = Gi.dot(e2);
-        m(i, 2) = Gi.dot(e3);
-    }
-    // Local (11, 22, 12, 13, 23) from covariant (rr, ss, rs, rt, st);
-    // engineering shears on both sides
-    const int la[5][2] = {{0, 0}, {1, 1}, {0, 1}, {0, 2}, {1, 2}};
-    const int cv[5][2] = {{0, 0}, {1, 1}, {0, 1}, {0, 2}, {1, 2}};
-    for (int p = 0; p < 5; ++p)
-    {
-        const int a = la[p][0], b = la[p][1];
-        const double fa = a == b ? 1 : 2;
-        for (int q = 0; q < 5; ++q)
-        {
-            const int i = cv[q][0], j = cv[q][1];
-            T(p, q) = i == j
-              ? fa*m(i, a)*m(i, b)
-              : fa*0.5*(m(i, a)*m(j, b) + m(j, a)*m(i, b));
-        }
-    }
+    shellLocalFrame(J, "mitc4", T, Q, detJ);
 }
 
 
