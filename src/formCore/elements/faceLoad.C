@@ -4,7 +4,11 @@
 Description
     Face loads of 3D elements (see solidElement.H).
 
-    Dead traction t per unit reference area on a 4- or 9-node face X(xi, eta):
+    Faces: 4- and 9-node quadrilaterals (3 x 3 Gauss points) and 3-node
+    triangles (the mid-surface faces of MITC3+ shells; 7 points,
+    gaussLegendre.H: exact, their integrands being of degree <= 2).
+
+    Dead traction t per unit reference area on a face X(xi, eta):
         f_a = int N_a t dA0,   dA0 = |X_xi x X_eta| dxi deta
     integrated with 3 x 3 Gauss points (exact on flat parallelogram faces,
     where |X_xi x X_eta| is constant and N_a of degree <= 2 per direction).
@@ -30,24 +34,51 @@ Description
 namespace form
 {
 
+namespace
+{
+
+//- The face's quadrature rule and shape functions (3, 4 or 9 nodes)
+const std::vector<quadraturePoint2D>& faceRule(int n)
+{
+    static const std::vector<quadraturePoint2D> quad = gaussLegendreQuad(3);
+    static const std::vector<quadraturePoint2D> tri = gaussTriangle7();
+    return n == 3 ? tri : quad;
+}
+
+void faceShape(int n, double r, double s, vecX& N, matX& dN)
+{
+    if (n != 3)
+    {
+        quadShapeEval(n, r, s, N, dN);
+        return;
+    }
+    N.resize(3);
+    N << 1 - r - s, r, s;
+    dN.resize(3, 2);
+    dN << -1, -1, 1, 0, 0, 1;
+}
+
+} // anonymous namespace
+
+
 vecX faceLoad::deadTraction(const matX& X, const vec3& t)
 {
     const int n = int(X.rows());
-    if ((n != 4 && n != 9) || X.cols() != 3)
+    if ((n != 3 && n != 4 && n != 9) || X.cols() != 3)
     {
         throw numericalError
         (
             "faceLoad::deadTraction: face with " + std::to_string(X.rows())
-          + "x" + std::to_string(X.cols()) + " coordinates; expected 4 or 9"
-            " nodes x 3"
+          + "x" + std::to_string(X.cols()) + " coordinates; expected 3, 4"
+            " or 9 nodes x 3"
         );
     }
     vecX f = vecX::Zero(3*n);
-    for (const quadraturePoint2D& q : gaussLegendreQuad(3))
+    for (const quadraturePoint2D& q : faceRule(n))
     {
         vecX N;
         matX dN;
-        quadShapeEval(n, q.r, q.s, N, dN);
+        faceShape(n, q.r, q.s, N, dN);
         const vec3 Xr = X.transpose()*dN.col(0);
         const vec3 Xs = X.transpose()*dN.col(1);
         const double dA = Xr.cross(Xs).norm()*q.w;
@@ -69,7 +100,7 @@ void faceLoad::followerPressure
     const int n = int(X.rows());
     if
     (
-        (n != 4 && n != 9) || X.cols() != 3
+        (n != 3 && n != 4 && n != 9) || X.cols() != 3
      || u.rows() != n || u.cols() != 3
     )
     {
@@ -78,7 +109,7 @@ void faceLoad::followerPressure
             "faceLoad::followerPressure: face with " + std::to_string(X.rows())
           + "x" + std::to_string(X.cols()) + " coordinates and "
           + std::to_string(u.rows()) + "x" + std::to_string(u.cols())
-          + " displacements; expected 4 or 9 nodes x 3"
+          + " displacements; expected 3, 4 or 9 nodes x 3"
         );
     }
     const matX x = X + u;
@@ -92,9 +123,9 @@ void faceLoad::followerPressure
     if (K) *K = matX::Zero(3*n, 3*n);
     vecX N;
     matX dN;
-    for (const quadraturePoint2D& q : gaussLegendreQuad(3))
+    for (const quadraturePoint2D& q : faceRule(n))
     {
-        quadShapeEval(n, q.r, q.s, N, dN);
+        faceShape(n, q.r, q.s, N, dN);
         const vec3 xr = x.transpose()*dN.col(0);
         const vec3 xs = x.transpose()*dN.col(1);
         const vec3 nda = xr.cross(xs)*q.w;

@@ -4,7 +4,8 @@
 Description
     Implementation of vtkWriter.H: Writes the solid mesh and results as VTK
     XML unstructured grids (.vtu) with true higher-order cells
-    (VTK_BIQUADRATIC_QUAD for 9-node elements, VTK_QUAD for 4-node ones) and
+    (VTK_BIQUADRATIC_QUAD for 9-node elements, VTK_QUAD for 4-node ones,
+    VTK_TRIANGLE for the 3-node shells) and
     a .pvd collection that ParaView opens as a time series.
 \*---------------------------------------------------------------------------*/
 #include "vtkWriter.H"
@@ -82,6 +83,7 @@ int form::vtkWriter::cellType(int nodesPerElement, int nDim)
     if (nDim == 2 && nodesPerElement == 4) return 9;    // VTK_QUAD
     if (nDim == 2 && nodesPerElement == 9) return 28;   // VTK_BIQUADRATIC_QUAD
     if (nDim == 3 && nodesPerElement == 4) return 9;    // VTK_QUAD (shells)
+    if (nDim == 3 && nodesPerElement == 3) return 5;    // VTK_TRIANGLE (shells)
     if (nDim == 3 && nodesPerElement == 8) return 12;   // VTK_HEXAHEDRON
     if (nDim == 3 && nodesPerElement == 27) return 29;  // VTK_TRIQUADRATIC_HEX
     throw numericalError

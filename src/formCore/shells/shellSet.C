@@ -17,13 +17,22 @@ namespace form
 
 bool shellSet::isShellType(const std::string& type)
 {
-    return type == "MITC4" || type == "MITC4+";
+    return nodesPerElement(type) > 0;
+}
+
+
+int shellSet::nodesPerElement(const std::string& type)
+{
+    return
+        type == "MITC4" || type == "MITC4+" ? 4
+      : type == "MITC3+" ? 3
+      : 0;
 }
 
 
 std::string shellSet::validTypes()
 {
-    return "MITC4 MITC4+";
+    return "MITC4 MITC4+ MITC3+";
 }
 
 
@@ -41,9 +50,14 @@ void shellSet::assignNodeDofs(feMesh& mesh)
 namespace
 {
 
-//- The lamina normal G_r x G_s of a bilinear quadrilateral at corner k
-vec3 cornerNormal(const Eigen::Matrix<double, 4, 3>& X, int k)
+//- The lamina normal G_r x G_s of a bilinear quadrilateral (X: 4 x 3)
+//  or a triangle (3 x 3) at corner k
+vec3 cornerNormal(const Eigen::MatrixX3d& X, int k)
 {
+    if (X.rows() == 3)
+    {
+        return (X.row(1) - X.row(0)).cross(X.row(2) - X.row(0)).transpose();
+    }
     static const double rn[4] = {-1, 1, 1, -1}, sn[4] = {-1, -1, 1, 1};
     quadShape<4>::vecN N;
     quadShape<4>::matN2 dN;
@@ -63,7 +77,9 @@ shellSet::shellSet
 )
 :
     shellNode_(mesh.nNodes(), -1),
-    elements_(mesh.blocks.size()),
+    quads_(mesh.blocks.size()),
+    tris_(mesh.blocks.size()),
+    npe_(mesh.blocks.size(), 0),
     connectivity_(mesh.blocks.size())
 {
     const std::size_t nb = mesh.blocks.size();
@@ -83,12 +99,14 @@ shellSet::shellSet
               + ") need a 3D analysis (solid3D)"
             );
         }
-        if (blk.nodesPerElement != 4)
+        npe_[b] = nodesPerElement(blk.elementType);
+        if (blk.nodesPerElement != npe_[b])
         {
             throw inputError
             (
                 "elementType",
-                where + ": " + blk.elementType + " has 4 nodes, the block "
+                where + ": " + blk.elementType + " has "
+              + std::to_string(npe_[b]) + " nodes, the block "
               + std::to_string(blk.nodesPerElement)
             );
         }
@@ -138,7 +156,7 @@ shellSet::shellSet
     }
     if (!any) return;
 
-    // Four distinct corners per element; at most two elements per edge
+    // Distinct corners; at most two elements per edge
     // (a branching, non-manifold sheet has no director field)
     std::map<std::pair<int, int>, int> edgeElements;
     for (std::size_t b = 0; b < nb; ++b)
@@ -148,9 +166,10 @@ shellSet::shellSet
         for (int e = 0; e < blk.nElements(); ++e)
         {
             const int* n = blk.nodes(e);
+            const int npe = npe_[b];
             const std::string where =
                 "block '" + blk.name + "' element " + std::to_string(e);
-            for (int k = 0; k < 4; ++k)
+            for (int k = 0; k < npe; ++k)
             {
                 for (int l = 0; l < k; ++l)
                 {
@@ -160,13 +179,14 @@ shellSet::shellSet
                         (
                             "mesh",
                             where + ": node " + std::to_string(n[k])
-                          + " appears twice (a degenerate quadrilateral; "
-                          + blk.elementType + " needs four distinct corners)"
+                          + " appears twice (a degenerate element; "
+                          + blk.elementType + " needs "
+                          + std::to_string(npe) + " distinct corners)"
                         );
                     }
                 }
                 const std::pair<int, int> edge =
-                    std::minmax(n[k], n[(k + 1) % 4]);
+                    std::minmax(n[k], n[(k + 1) % npe]);
                 if (++edgeElements[edge] > 2)
                 {
                     throw inputError
@@ -202,8 +222,11 @@ shellSet::shellSet
     // Initial directors: the normalised sums of the corner normals
     const auto corners = [&](const elementBlock& blk, int e)
     {
-        Eigen::Matrix<double, 4, 3> X;
-        for (int k = 0; k < 4; ++k) X.row(k) = mesh.X.row(blk.nodes(e)[k]);
+        Eigen::MatrixX3d X(blk.nodesPerElement, 3);
+        for (int k = 0; k < blk.nodesPerElement; ++k)
+        {
+            X.row(k) = mesh.X.row(blk.nodes(e)[k]);
+        }
         return X;
     };
     std::vector<vec3> sum(nodeOf_.size(), vec3::Zero());
@@ -213,8 +236,8 @@ shellSet::shellSet
         if (!isShellType(blk.elementType)) continue;
         for (int e = 0; e < blk.nElements(); ++e)
         {
-            const Eigen::Matrix<double, 4, 3> X = corners(blk, e);
-            for (int k = 0; k < 4; ++k)
+            const Eigen::MatrixX3d X = corners(blk, e);
+            for (int k = 0; k < blk.nodesPerElement; ++k)
             {
                 const vec3 n = cornerNormal(X, k);
                 if (!(n.norm() > 0))
@@ -265,9 +288,10 @@ shellSet::shellSet
         connectivity_[b] = blk.connectivity;
         for (int e = 0; e < blk.nElements(); ++e)
         {
-            const Eigen::Matrix<double, 4, 3> X = corners(blk, e);
-            Eigen::Matrix<double, 4, 3> V0;
-            for (int k = 0; k < 4; ++k)
+            const int npe = npe_[b];
+            const Eigen::MatrixX3d X = corners(blk, e);
+            Eigen::MatrixX3d V0(npe, 3);
+            for (int k = 0; k < npe; ++k)
             {
                 const int s = shellNode_[blk.nodes(e)[k]];
                 V0.row(k) = V0_[s].transpose();
@@ -288,12 +312,23 @@ shellSet::shellSet
             }
             try
             {
-                elements_[b].emplace_back
-                (
-                    X, V0, Eigen::Vector4d::Constant(blk.shell.thickness),
-                    law, blk.shell.points, blk.shell.lobatto,
-                    blk.elementType == "MITC4+"
-                );
+                if (npe == 3)
+                {
+                    tris_[b].emplace_back
+                    (
+                        X, V0, Eigen::Vector3d::Constant(blk.shell.thickness),
+                        law, blk.shell.points, blk.shell.lobatto
+                    );
+                }
+                else
+                {
+                    quads_[b].emplace_back
+                    (
+                        X, V0, Eigen::Vector4d::Constant(blk.shell.thickness),
+                        law, blk.shell.points, blk.shell.lobatto,
+                        blk.elementType == "MITC4+"
+                    );
+                }
             }
             catch (const numericalError& err)
             {
@@ -318,103 +353,6 @@ shellSet::shellSet
 }
 
 
-std::array<shellNodeState, 4> shellSet::nodeStates
-(
-    int block,
-    int element,
-    const dofMap& dofs,
-    const vecX& U
-) const
-{
-    const int* nodes = connectivity_[block].data() + 4*element;
-    std::array<shellNodeState, 4> states;
-    for (int k = 0; k < 4; ++k)
-    {
-        const int n = nodes[k];
-        const int s = shellNode_[n];
-        states[k].u = dofs.vector3(U, n);
-        const Eigen::Vector2d d = increment(s, dofs, U);
-        states[k].director = frames_[s].at(d(0), d(1));
-        // the committed director's change (zero until the first fold)
-        // and the increment's, each without cancellation
-        states[k].dV = (frames_[s].V - V0_[s]) + states[k].director.dVc;
-    }
-    return states;
-}
-
-
-bool shellSet::compute
-(
-    int block,
-    int element,
-    const dofMap& dofs,
-    const vecX& U,
-    const std::vector<materialState>& committed,
-    std::vector<materialState>& trial,
-    vecX& fe,
-    matX* Ke
-) const
-{
-    mitc4::vecQ f;
-    mitc4::matQ K;
-    const bool ok = elements_[block][element].compute
-    (
-        nodeStates(block, element, dofs, U), committed, trial, f,
-        Ke ? &K : nullptr
-    );
-    fe = f;
-    if (Ke) *Ke = K;
-    return ok;
-}
-
-
-elementResult shellSet::result
-(
-    int block,
-    int element,
-    const dofMap& dofs,
-    const vecX& U,
-    const std::vector<materialState>& states
-) const
-{
-    const mitc4& el = elements_[block][element];
-    const auto* law = dynamic_cast<const planeStressMaterial*>(&el.law());
-    std::vector<mat3> Q;
-    std::vector<vec5> eps;
-    el.pointStrains(nodeStates(block, element, dofs, U), Q, eps);
-    elementResult r;
-    if (!law) return r;
-    const int nq = int(Q.size());
-    // The bottom, middle and top points through the thickness: weights
-    // of point it in each layer
-    const std::vector<double>& zt = el.thicknessPoints();
-    const int nT = int(zt.size());
-    std::vector<std::array<double, 3>> layer(nT, {0, 0, 0});
-    const int bottom = int(std::min_element(zt.begin(), zt.end()) - zt.begin());
-    const int top = int(std::max_element(zt.begin(), zt.end()) - zt.begin());
-    layer[bottom][0] = layer[top][2] = 0.25;
-    std::vector<int> order(nT);
-    for (int i = 0; i < nT; ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return zt[a] < zt[b]; });
-    if (nT % 2) layer[order[nT/2]][1] = 0.25;
-    else layer[order[nT/2 - 1]][1] = layer[order[nT/2]][1] = 0.125;
-    for (int q = 0; q < nq; ++q)
-    {
-        const planeStressMaterial::pointOutput o =
-            law->output(Q[q], eps[q], states[q]);
-        for (int l = 0; l < 3; ++l) r.shellLayers[l] += layer[q % nT][l]*o.cauchy;
-        r.cauchy += o.cauchy/nq;
-        r.equivalentStrain += o.equivalentStrain/nq;
-        r.thicknessStretch = q
-          ? std::min(r.thicknessStretch, o.thicknessStretch)
-          : o.thicknessStretch;
-        r.meanThicknessStretch += (o.thicknessStretch - 1)/nq;
-    }
-    r.pressure = -r.cauchy.trace()/3;
-    return r;
-}
-
-
 directorState shellSet::directorAt
 (
     int node,
@@ -425,47 +363,6 @@ directorState shellSet::directorAt
     const int s = shellNode_[node];
     const Eigen::Vector2d d = increment(s, dofs, U);
     return frames_[s].at(d(0), d(1));
-}
-
-
-matX shellSet::massMatrix
-(
-    int block,
-    int element,
-    double rho,
-    bool lumped
-) const
-{
-    const mitc4& el = elements_[block][element];
-    const double t = thickness_[shellNode_[connectivity_[block][4*element]]];
-    Eigen::Matrix<double, 4, 3> X;
-    for (int k = 0; k < 4; ++k) X.row(k) = el.referencePoint(k).transpose();
-    const double g = 1/std::sqrt(3.0);
-    Eigen::Matrix4d m = Eigen::Matrix4d::Zero();
-    for (const double r : {-g, g})
-    {
-        for (const double s : {-g, g})
-        {
-            quadShape<4>::vecN N;
-            quadShape<4>::matN2 dN;
-            quadShape<4>::eval(r, s, N, dN);
-            const vec3 Xr = X.transpose()*dN.col(0);
-            const vec3 Xs = X.transpose()*dN.col(1);
-            m += N*N.transpose()*Xr.cross(Xs).norm();
-        }
-    }
-    matX M = matX::Zero(20, 20);
-    for (int a = 0; a < 4; ++a)
-    {
-        const double area = m.row(a).sum();      // int N_a dA
-        for (int b = 0; b < 4; ++b)
-        {
-            const double mab = lumped ? (a == b ? area : 0.0) : m(a, b);
-            for (int i = 0; i < 3; ++i) M(5*a + i, 5*b + i) = rho*t*mab;
-        }
-        M(5*a + 3, 5*a + 3) = M(5*a + 4, 5*a + 4) = rho*t*t*t/12*area;
-    }
-    return M;
 }
 
 

@@ -313,11 +313,7 @@ solidModel::solidModel
             m.elemLocal.push_back(e);
             if (shell)
             {
-                m.committed.emplace_back
-                (
-                    m.shells->nQuadrature(blockIndex),
-                    m.shells->law(blockIndex).initialState()
-                );
+                m.committed.push_back(m.shells->initialStates(blockIndex));
             }
             else
             {

@@ -460,7 +460,10 @@ void solidModel::setBodyForce(double rho, vectorTimeFunction g)
             (
                 m.elemBlock[e], m.elemLocal[e], rho, true
             ).diagonal();
-            for (int a = 0; a < 4; ++a) rowSum(5*a + 3) = rowSum(5*a + 4) = 0;
+            for (int a = 0; a < blk.nodesPerElement; ++a)
+            {
+                rowSum(5*a + 3) = rowSum(5*a + 4) = 0;
+            }
         }
         const int* nodes = blk.nodes(m.elemLocal[e]);
         const int nd = b.nodeDofs;

@@ -3,11 +3,15 @@
 -------------------------------------------------------------------------------
 Description
     polyMeshToFeMesh (polyMeshToFeMesh.H): the shell upgrade. A sheet
-    meshed one hexahedron thick (blockMesh) becomes a mesh of 4-node shell
-    elements on its mid-surface:
-      - the thickness direction of a cell is the pair of its opposite
-        faces that both lie on the boundary and are closest to each other;
-        the four cell edges joining them are its through-thickness edges;
+    meshed one cell thick becomes a mesh of shell elements on its
+    mid-surface: hexahedra (blockMesh) 4-node elements (MITC4, MITC4+),
+    prisms (extrudeMesh from a triangulated surface) 3-node elements
+    (MITC3+):
+      - the thickness direction of a hexahedron is the pair of its
+        opposite faces that both lie on the boundary and are closest to
+        each other, the four cell edges joining them its through-thickness
+        edges; a prism's are the three edges joining its triangles, which
+        must both lie on the boundary;
       - every through-thickness edge becomes one shell node at its
         midpoint (shared by the cells around it); both of its polyMesh
         points map to that node;
@@ -23,15 +27,16 @@ Description
       - every patch becomes a node set and a face set: a side face of the
         sheet the shell edge it covers (2 nodes: tractions on it act on
         the edge's length times the thickness), a face of the sheet its
-        element's mid-surface quadrilateral, ordered so that its normal
-        is the patch's outward one (tractions per unit area and follower
-        pressures act on the mid-surface).
+        element's mid-surface quadrilateral or triangle, ordered so that
+        its normal is the patch's outward one (tractions per unit area and
+        follower pressures act on the mid-surface).
 \*---------------------------------------------------------------------------*/
 #include "polyMeshToFeMesh.H"
 #include "cellModel.H"
 #include "edge.H"
 #include "HashTable.H"
 #include "shellSet.H"
+#include <algorithm>
 #include <deque>
 
 namespace
@@ -46,6 +51,10 @@ constexpr int throughEdges[3][4][2] =
     {{0, 3}, {1, 2}, {5, 6}, {4, 7}},   // s: faces 0 1 5 4 and 3 2 6 7
     {{0, 4}, {1, 5}, {2, 6}, {3, 7}}    // t: faces 0 1 2 3 and 4 5 6 7
 };
+
+// A prism (OpenFOAM's model: triangles 0 1 2 and 3 4 5): its through-
+// thickness edges (the fourth repeats the first: unused)
+constexpr int prismEdges[4][2] = {{0, 3}, {1, 4}, {2, 5}, {0, 3}};
 
 } // anonymous namespace
 
@@ -65,8 +74,12 @@ void Foam::polyMeshToFeMesh::buildShell
     const cellShapeList& shapes = mesh.cellShapes();
     const label nCells = mesh.nCells();
 
-    // The boundary face of cell celli whose corners are the given side
-    // (0, 1) of the through-thickness edges e (-1: none)
+    const cellModel& prism = cellModel::ref(cellModel::PRISM);
+    // Nodes per element: 3 (MITC3+: a sheet of prisms), else 4 (hexahedra)
+    const int npe = form::shellSet::nodesPerElement(elementType);
+
+    // The boundary face of cell celli whose npe corners are the given
+    // side (0, 1) of the through-thickness edges e (-1: none)
     const auto boundaryFace =
         [&](label celli, const int (&e)[4][2], int side)
     {
@@ -75,9 +88,9 @@ void Foam::polyMeshToFeMesh::buildShell
         {
             if (mesh.isInternalFace(facei)) continue;
             const face& f = mesh.faces()[facei];
-            if (f.size() != 4) continue;
+            if (f.size() != npe) continue;
             bool all = true;
-            for (int k = 0; k < 4; ++k) all = all && f.found(cs[e[k][side]]);
+            for (int k = 0; k < npe; ++k) all = all && f.found(cs[e[k][side]]);
             if (all) return facei;
         }
         return label(-1);
@@ -88,9 +101,9 @@ void Foam::polyMeshToFeMesh::buildShell
     block.name = region;
     block.elementType = elementType;
     block.materialName = materialName;
-    block.nodesPerElement = 4;
+    block.nodesPerElement = npe;
     block.shell = section;
-    block.connectivity.reserve(4*nCells);
+    block.connectivity.reserve(npe*nCells);
 
     HashTable<label, edge, Hash<edge>> midNode;
     DynamicList<Eigen::Vector3d> X;
@@ -101,27 +114,33 @@ void Foam::polyMeshToFeMesh::buildShell
     forAll(shapes, celli)
     {
         const cellShape& cs = shapes[celli];
-        if (cs.model() != hex)
+        if (cs.model() != (npe == 3 ? prism : hex))
         {
             FatalErrorInFunction
                 << "Cell " << celli << " of solid region '" << region
-                << "' is not a hexahedron (cell centre "
-                << mesh.cellCentres()[celli] << ")." << nl
-                << "    Shell elements (" << elementType << ") take the"
-                << " mid-surface of a sheet meshed one hexahedron thick."
-                << exit(FatalError);
+                << "' is not a " << (npe == 3 ? "prism" : "hexahedron")
+                << " (cell centre " << mesh.cellCentres()[celli] << ")."
+                << nl << "    Shell elements (" << elementType << ") take"
+                << " the mid-surface of a sheet meshed one "
+                << (npe == 3 ? "prism" : "hexahedron") << " thick ("
+                << (npe == 3
+                    ? "MITC3+: prisms, e.g. extrudeMesh from a triangulated"
+                      " surface; MITC4, MITC4+: hexahedra"
+                    : "MITC4, MITC4+: hexahedra; MITC3+: prisms")
+                << ")." << exit(FatalError);
         }
         int best = -1;
         scalar bestLength = GREAT;
-        for (int d = 0; d < 3; ++d)
+        for (int d = 0; d < (npe == 3 ? 1 : 3); ++d)
         {
-            const label fa = boundaryFace(celli, throughEdges[d], 0);
-            const label fb = boundaryFace(celli, throughEdges[d], 1);
+            const int (&te)[4][2] = npe == 3 ? prismEdges : throughEdges[d];
+            const label fa = boundaryFace(celli, te, 0);
+            const label fb = boundaryFace(celli, te, 1);
             if (fa < 0 || fb < 0) continue;
             scalar length = 0;
-            for (const auto& e : throughEdges[d])
+            for (int k = 0; k < npe; ++k)
             {
-                length += 0.25*mag(pts[cs[e[1]]] - pts[cs[e[0]]]);
+                length += mag(pts[cs[te[k][1]]] - pts[cs[te[k][0]]])/npe;
             }
             if (length < bestLength)
             {
@@ -138,11 +157,13 @@ void Foam::polyMeshToFeMesh::buildShell
                 << " two opposite faces on the boundary: the sheet is not"
                 << " meshed one cell thick." << nl
                 << "    Shell elements (" << elementType << ") need a sheet"
-                << " of one hexahedron through its thickness."
+                << " of one cell through its thickness."
                 << exit(FatalError);
         }
-        for (const auto& e : throughEdges[best])
+        const int (&te)[4][2] = npe == 3 ? prismEdges : throughEdges[best];
+        for (int k = 0; k < npe; ++k)
         {
+            const auto& e = te[k];
             const edge ed(cs[e[0]], cs[e[1]]);
             auto iter = midNode.find(ed);
             label n;
@@ -178,13 +199,33 @@ void Foam::polyMeshToFeMesh::buildShell
     // Orientation: a walk across shared element edges; neighbours must
     // run their shared edge in opposite directions
     HashTable<DynamicList<label>, edge, Hash<edge>> edgeElements;
-    const auto nodesOf = [&block](label e, int k)
+    const auto nodesOf = [&block, npe](label e, int k)
     {
-        return block.connectivity[4*e + (k % 4)];
+        return block.connectivity[npe*e + (k % npe)];
+    };
+    // The normal of element e's mid-surface (its orientation)
+    const auto normalOf = [&](label e)
+    {
+        return
+            npe == 3
+          ? Eigen::Vector3d
+            (
+                (X[nodesOf(e, 1)] - X[nodesOf(e, 0)]).cross
+                (
+                    X[nodesOf(e, 2)] - X[nodesOf(e, 0)]
+                )
+            )
+          : Eigen::Vector3d
+            (
+                (X[nodesOf(e, 2)] - X[nodesOf(e, 0)]).cross
+                (
+                    X[nodesOf(e, 3)] - X[nodesOf(e, 1)]
+                )
+            );
     };
     for (label e = 0; e < nCells; ++e)
     {
-        for (int k = 0; k < 4; ++k)
+        for (int k = 0; k < npe; ++k)
         {
             const edge ed(nodesOf(e, k), nodesOf(e, k + 1));
             edgeElements(ed).append(e);
@@ -211,7 +252,7 @@ void Foam::polyMeshToFeMesh::buildShell
     const auto runs = [&](label e, label a, label b)
     {
         // Does element e (as flipped) run from node a to node b?
-        for (int k = 0; k < 4; ++k)
+        for (int k = 0; k < npe; ++k)
         {
             const label p = nodesOf(e, k), q = nodesOf(e, k + 1);
             if (p == a && q == b) return flip[e] == 0;
@@ -233,11 +274,7 @@ void Foam::polyMeshToFeMesh::buildShell
             const label to = pa <= pb ? fb : fa;
             const vector up =
                 mesh.faceCentres()[to] - mesh.faceCentres()[from];
-            const Eigen::Vector3d d =
-                (X[nodesOf(seed, 2)] - X[nodesOf(seed, 0)]).cross
-                (
-                    X[nodesOf(seed, 3)] - X[nodesOf(seed, 1)]
-                );
+            const Eigen::Vector3d d = normalOf(seed);
             flip[seed] = (d(0)*up.x() + d(1)*up.y() + d(2)*up.z()) < 0;
         }
         std::deque<label> queue{seed};
@@ -245,7 +282,7 @@ void Foam::polyMeshToFeMesh::buildShell
         {
             const label e = queue.front();
             queue.pop_front();
-            for (int k = 0; k < 4; ++k)
+            for (int k = 0; k < npe; ++k)
             {
                 const label a = nodesOf(e, k), b = nodesOf(e, k + 1);
                 // directed as e runs it
@@ -276,7 +313,10 @@ void Foam::polyMeshToFeMesh::buildShell
     {
         if (flip[e] == 1)
         {
-            std::swap(block.connectivity[4*e + 1], block.connectivity[4*e + 3]);
+            std::swap
+            (
+                block.connectivity[npe*e + 1], block.connectivity[npe*e + npe - 1]
+            );
         }
     }
 
@@ -318,8 +358,8 @@ void Foam::polyMeshToFeMesh::buildShell
     // Patches -> node sets (the shell nodes of their faces) and face sets:
     // a side face of the sheet becomes the shell edge between its two
     // through-thickness edges (2 nodes, localFace = the element's edge),
-    // a sheet face the element's mid-surface quadrilateral (4 nodes,
-    // ordered counter-clockwise seen from outside the patch, so that its
+    // a sheet face the element's mid-surface quadrilateral or triangle
+    // (ordered counter-clockwise seen from outside the patch, so that its
     // normal is the patch's outward normal, localFace = -1)
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
     forAll(patches, patchi)
@@ -332,17 +372,14 @@ void Foam::polyMeshToFeMesh::buildShell
             const label facei = pp.start() + i;
             const label celli = mesh.faceOwner()[facei];
             const face& f = pp[i];
-            const int* el = block.connectivity.data() + 4*celli;
+            const int* el = block.connectivity.data() + npe*celli;
             if (facei == sheetFaces[celli][0] || facei == sheetFaces[celli][1])
             {
-                const Eigen::Vector3d d =
-                    (X[el[2]] - X[el[0]]).cross(X[el[3]] - X[el[1]]);
+                const Eigen::Vector3d d = normalOf(celli);
                 const vector& n = mesh.faceAreas()[facei];
                 const bool along = d(0)*n.x() + d(1)*n.y() + d(2)*n.z() > 0;
-                std::vector<int> nodes =
-                    along
-                  ? std::vector<int>{el[0], el[1], el[2], el[3]}
-                  : std::vector<int>{el[0], el[3], el[2], el[1]};
+                std::vector<int> nodes(el, el + npe);
+                if (!along) std::reverse(nodes.begin() + 1, nodes.end());
                 faceSet.push_back({0, int(celli), -1, nodes});
                 nodeSet.insert(nodeSet.end(), nodes.begin(), nodes.end());
                 continue;
@@ -355,15 +392,15 @@ void Foam::polyMeshToFeMesh::buildShell
             }
             if (nodes.size() != 2) continue;
             int local = -1;
-            for (int k = 0; k < 4; ++k)
+            for (int k = 0; k < npe; ++k)
             {
-                const edge ek(el[k], el[(k + 1) % 4]);
+                const edge ek(el[k], el[(k + 1) % npe]);
                 if (ek == edge(nodes[0], nodes[1])) local = k;
             }
             if (local >= 0)
             {
                 // In the element's sense of its edge
-                nodes = {el[local], el[(local + 1) % 4]};
+                nodes = {el[local], el[(local + 1) % npe]};
             }
             faceSet.push_back({0, int(celli), local, nodes});
             nodeSet.insert(nodeSet.end(), nodes.begin(), nodes.end());

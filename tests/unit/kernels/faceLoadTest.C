@@ -2,7 +2,9 @@
 // (direction and total on a flat face, zero resultant and a symmetric
 // load stiffness on the closed, deformed surface of a hexahedron: the
 // pressure load of a closed volume is conservative, W = -p V) and its
-// load stiffness K = -df/du against central differences.
+// load stiffness K = -df/du against central differences; the same for
+// 3-node triangles (MITC3+ mid-surfaces) on a flat triangle and the
+// closed surface of a deformed tetrahedron.
 #include "solidElement.H"
 #include "hexShape.H"
 #include "formError.H"
@@ -155,7 +157,7 @@ TEST(faceLoad, followerPressureRejectsWrongShapes)
     vecX f;
     EXPECT_THROW
     (
-        faceLoad::followerPressure(matX::Zero(3, 3), matX::Zero(3, 3), 1, f, nullptr),
+        faceLoad::followerPressure(matX::Zero(5, 3), matX::Zero(5, 3), 1, f, nullptr),
         numericalError
     );
     EXPECT_THROW
@@ -163,4 +165,65 @@ TEST(faceLoad, followerPressureRejectsWrongShapes)
         faceLoad::followerPressure(matX::Zero(4, 3), matX::Zero(4, 2), 1, f, nullptr),
         numericalError
     );
+}
+
+TEST(faceLoad, followerPressureOnTriangles)
+{
+    // A flat triangle in z = 1, counter-clockwise from +z: area 3, the
+    // total -p A e_z, a third at each corner, dead = follower undeformed
+    matX X(3, 3);
+    X << 0, 0, 1, 3, 0, 1, 1, 2, 1;
+    vecX f;
+    faceLoad::followerPressure(X, matX::Zero(3, 3), 2.0, f, nullptr);
+    for (int a = 0; a < 3; ++a)
+    {
+        EXPECT_LT((f.segment<3>(3*a) - Eigen::Vector3d(0, 0, -2.0)).norm(), 1e-13);
+    }
+    EXPECT_LT((f - faceLoad::deadTraction(X, Eigen::Vector3d(0, 0, -2))).norm(), 1e-13);
+
+    // The closed surface of a deformed tetrahedron (faces outward):
+    // self-equilibrated, symmetric load stiffness; each face's stiffness
+    // against central differences
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    matX T(4, 3);
+    T << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+    const matX u = 0.2*matX::NullaryExpr(4, 3, [&]() { return uni(rng); });
+    const std::vector<std::vector<int>> faces =
+        {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    vecX F = vecX::Zero(12);
+    matX KK = matX::Zero(12, 12);
+    for (const std::vector<int>& n : faces)
+    {
+        vecX fe;
+        matX K;
+        const matX Xf = gather3(T, n), uf = gather3(u, n);
+        faceLoad::followerPressure(Xf, uf, 1.3, fe, &K);
+        matX Kfd(9, 9);
+        const double h = 1e-6;
+        for (int j = 0; j < 9; ++j)
+        {
+            matX up = uf, um = uf;
+            vecX fp, fm;
+            up(j/3, j % 3) += h;
+            um(j/3, j % 3) -= h;
+            faceLoad::followerPressure(Xf, up, 1.3, fp, nullptr);
+            faceLoad::followerPressure(Xf, um, 1.3, fm, nullptr);
+            Kfd.col(j) = -(fp - fm)/(2*h);
+        }
+        EXPECT_TRUE(test::fdError("faceLoad follower pressure, triangle", test::relErr(K, Kfd), fdTolFaceLoad));
+        for (int a = 0; a < 3; ++a)
+        {
+            F.segment<3>(3*n[a]) += fe.segment<3>(3*a);
+            for (int b = 0; b < 3; ++b)
+            {
+                KK.block<3, 3>(3*n[a], 3*n[b]) += K.block<3, 3>(3*a, 3*b);
+            }
+        }
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+        EXPECT_NEAR(F(Eigen::seq(i, 11, 3)).sum(), 0, 1e-13);
+    }
+    EXPECT_LT((KK - KK.transpose()).norm(), 1e-12*KK.norm());
 }
