@@ -316,8 +316,8 @@ bool mitc3::integrate
     static const std::vector<quadraturePoint2D> plane = gaussTriangle7();
     const materialState none;
     materialState scratch;
-    vec5 E, S;
-    mat5 T, D;
+    vec5 E;
+    mat5 T;
     mat3 Q;
     Eigen::Matrix<double, 5, nDofsB> B;
     // The shear tying bases of each point through the thickness
@@ -346,24 +346,21 @@ bool mitc3::integrate
                 *W += w*law_->energy(eps);
                 if (!f && !K) continue;
             }
+            vec5 m;
             if
             (
-                !law_->stress
+                !addShellPoint<nDofsB>
                 (
-                    Q, eps, committed ? (*committed)[q] : none,
-                    trial ? (*trial)[q] : scratch, S, D
+                    *law_, Q, eps, committed ? (*committed)[q] : none,
+                    trial ? (*trial)[q] : scratch, T, B, w, f, K, m
                 )
             )
             {
                 return false;
             }
-            const Eigen::Matrix<double, 5, nDofsB> Bl = T*B;
-            if (f) *f += w*Bl.transpose()*S;
             if (!K) continue;
-            *K += w*Bl.transpose()*D*Bl;
             // Geometric part: the covariant resultants T^T S times the
             // second derivatives of the covariant strains
-            const vec5 m = w*T.transpose()*S;
             addSecond(b, 0, 0, 0.5*m(0), nodes, bubble, *K);
             addSecond(b, 1, 1, 0.5*m(1), nodes, bubble, *K);
             addSecond(b, 0, 1, m(2), nodes, bubble, *K);

@@ -360,8 +360,8 @@ bool mitc4::integrate
     const double pts[2] = {-g, g};
     const materialState none;
     materialState scratch;
-    vec5 E, S;
-    mat5 T, D;
+    vec5 E;
+    mat5 T;
     mat3 Q;
     Eigen::Matrix<double, 5, nDofs> B;
     membraneTies ties;
@@ -393,24 +393,21 @@ bool mitc4::integrate
                 *W += w*law_->energy(eps);
                 if (!f && !K) continue;
             }
+            vec5 m;
             if
             (
-                !law_->stress
+                !addShellPoint<nDofs>
                 (
-                    Q, eps, committed ? (*committed)[q] : none,
-                    trial ? (*trial)[q] : scratch, S, D
+                    *law_, Q, eps, committed ? (*committed)[q] : none,
+                    trial ? (*trial)[q] : scratch, T, B, w, f, K, m
                 )
             )
             {
                 return false;
             }
-            const Eigen::Matrix<double, 5, nDofs> Bl = T*B;
-            if (f) *f += w*Bl.transpose()*S;
             if (!K) continue;
-            *K += w*Bl.transpose()*D*Bl;
             // Geometric part: the covariant stress resultants T^T S
             // times the second derivatives of the covariant strains
-            const vec5 m = w*T.transpose()*S;
             addSecond(b, 0, 0, 0.5*m(0), nodes, *K);
             addSecond(b, 1, 1, 0.5*m(1), nodes, *K);
             addSecond(b, 0, 1, m(2), nodes, *K);

@@ -50,6 +50,32 @@ std::vector<materialState> shellSet::initialStates(int block) const
 }
 
 
+namespace
+{
+
+//- Forces and tangent of an element of either type into fe, Ke
+template<class Element, std::size_t N>
+bool computeElement
+(
+    const Element& el,
+    const std::array<shellNodeState, N>& nodes,
+    const std::vector<materialState>& committed,
+    std::vector<materialState>& trial,
+    vecX& fe,
+    matX* Ke
+)
+{
+    typename Element::vecQ f;
+    typename Element::matQ K;
+    const bool ok = el.compute(nodes, committed, trial, f, Ke ? &K : nullptr);
+    fe = f;
+    if (Ke) *Ke = K;
+    return ok;
+}
+
+} // anonymous namespace
+
+
 bool shellSet::compute
 (
     int block,
@@ -62,29 +88,18 @@ bool shellSet::compute
     matX* Ke
 ) const
 {
-    if (npe_[block] == 3)
-    {
-        mitc3::vecQ f;
-        mitc3::matQ K;
-        const bool ok = tris_[block][element].compute
+    return
+        npe_[block] == 3
+      ? computeElement
         (
-            nodeStates<3>(block, element, dofs, U), committed, trial, f,
-            Ke ? &K : nullptr
+            tris_[block][element], nodeStates<3>(block, element, dofs, U),
+            committed, trial, fe, Ke
+        )
+      : computeElement
+        (
+            quads_[block][element], nodeStates<4>(block, element, dofs, U),
+            committed, trial, fe, Ke
         );
-        fe = f;
-        if (Ke) *Ke = K;
-        return ok;
-    }
-    mitc4::vecQ f;
-    mitc4::matQ K;
-    const bool ok = quads_[block][element].compute
-    (
-        nodeStates<4>(block, element, dofs, U), committed, trial, f,
-        Ke ? &K : nullptr
-    );
-    fe = f;
-    if (Ke) *Ke = K;
-    return ok;
 }
 
 
