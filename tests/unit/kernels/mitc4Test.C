@@ -20,6 +20,7 @@
 //     Bathe 2017a eq. 22) and not on a warped one.
 // Large-rotation solutions: mitc4LargeRotationTest.C.
 #include "mitc4.H"
+#include "shellKernelTestTools.H"
 #include "planeStressMaterial.H"
 #include "materialTestTools.H"
 #include "formError.H"
@@ -457,7 +458,6 @@ namespace
 {
 
 //- Linear stiffness of a flat mesh of MITC4 elements in the plane z = 0
-//  (directors e_z; rotation alpha about x, beta about y), 5 dofs per node
 Eigen::MatrixXd flatStiffness
 (
     const std::vector<vec3>& points,
@@ -467,31 +467,14 @@ Eigen::MatrixXd flatStiffness
     bool plus = false
 )
 {
-    const int N = 5*int(points.size());
-    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(N, N);
-    const shellDirector frame = shellDirector::of(vec3::UnitZ());
-    for (const auto& q : quads)
-    {
-        Eigen::Matrix<double, 4, 3> X, V0;
-        std::array<shellNodeState, 4> s;
-        for (int k = 0; k < 4; ++k)
+    return test::flatShellStiffness<4>
+    (
+        points, quads,
+        [&](const Eigen::Matrix<double, 4, 3>& X, const Eigen::Matrix<double, 4, 3>& V0)
         {
-            X.row(k) = points[q[k]].transpose();
-            V0.row(k) << 0, 0, 1;
-            s[k] = shellNodeState::of(vec3::UnitZ(), vec3::Zero(), frame.at(0, 0));
+            return mitc4(X, V0, Eigen::Vector4d::Constant(thickness), mat, 2, false, plus);
         }
-        const mitc4 el
-        (
-            X, V0, Eigen::Vector4d::Constant(thickness), mat, 2, false, plus
-        );
-        mitc4::vecQ f;
-        mitc4::matQ Ke;
-        el.compute(s, f, &Ke);
-        for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b)
-                K.block<5, 5>(5*q[a], 5*q[b]) += Ke.block<5, 5>(5*a, 5*b);
-    }
-    return K;
+    );
 }
 
 } // anonymous namespace
@@ -526,23 +509,7 @@ TEST(mitc4, thinCantileverDoesNotLock)
             flatStiffness(points, quads, t, shellElastic{E, 0.0, 5.0/6.0}, plus);
         Eigen::VectorXd F = Eigen::VectorXd::Zero(N);
         F(5*id(n, 0) + 2) = F(5*id(n, 1) + 2) = 0.5*P;
-        // clamp the nodes at x = 0
-        std::vector<int> freeDofs;
-        for (int q = 0; q < N; ++q)
-        {
-            if (q/5 != id(0, 0) && q/5 != id(0, 1)) freeDofs.push_back(q);
-        }
-        const int nf = int(freeDofs.size());
-        Eigen::MatrixXd Kf(nf, nf);
-        Eigen::VectorXd Ff(nf);
-        for (int i = 0; i < nf; ++i)
-        {
-            Ff(i) = F(freeDofs[i]);
-            for (int j = 0; j < nf; ++j) Kf(i, j) = K(freeDofs[i], freeDofs[j]);
-        }
-        const Eigen::VectorXd uf = Kf.ldlt().solve(Ff);
-        Eigen::VectorXd u = Eigen::VectorXd::Zero(N);
-        for (int i = 0; i < nf; ++i) u(freeDofs[i]) = uf(i);
+        const Eigen::VectorXd u = test::clampedSolve(K, F, {id(0, 0), id(0, 1)});
         const double w = 0.5*(u(5*id(n, 0) + 2) + u(5*id(n, 1) + 2));
         const double I = t*t*t/12, A = t, G = E/2;
         const double wRef = P*L*L*L/(3*E*I) + P*L/(5.0/6.0*G*A);
