@@ -156,13 +156,27 @@ void Foam::formScene::readSummary()
         }
         else if (type == "uChannelSpringback")
         {
-            keys.append(wordList{"patch", "quantity"});
+            // plane (3D only): the plane of the profile, xy (default) or
+            // xz (a sheet whose normal is z)
+            keys.append(wordList{"patch", "quantity", "plane"});
             const word q = ed.get<word>("quantity");
             if (!wordList{"theta1", "theta2", "rho"}.found(q))
             {
                 FatalIOErrorInFunction(ed)
                     << "Entry 'quantity' in " << ed.name() << ": unknown '"
                     << q << "'; valid: theta1 theta2 rho"
+                    << exit(FatalIOError);
+            }
+            const bool is3D =
+                !solids_.empty()
+             && solids_[0].analysis() == form::analysisType::solid3D;
+            const word plane = ed.getOrDefault<word>("plane", "xy");
+            if (!wordList{"xy", "xz"}.found(plane) || (!is3D && plane != "xy"))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'plane' in " << ed.name() << ": unknown '"
+                    << plane << "'; valid: "
+                    << (is3D ? "xy xz" : "xy (the FE plane of a 2D analysis)")
                     << exit(FatalIOError);
             }
         }
@@ -184,11 +198,11 @@ void Foam::formScene::readSummary()
                 << exit(FatalIOError);
         }
         checkKeywords(ed, keys);
-        // Measures of a curve in the FE plane
+        // Measures of a curve in the FE plane (uChannelSpringback also in
+        // 3D: the profile of a strip in plane strain, evaluate())
         if
         (
-            wordList{"circleRadius", "rotation", "bendingRadius",
-                "uChannelSpringback"}.found(type)
+            wordList{"circleRadius", "rotation", "bendingRadius"}.found(type)
          && !solids_.empty()
          && solids_[0].analysis() == form::analysisType::solid3D
         )
@@ -198,7 +212,9 @@ void Foam::formScene::readSummary()
                 << " measures a profile in the plane of a 2D analysis;"
                 << " solid region '" << solids_[0].name() << "' is 3D" << nl
                 << "    Valid in 3D: displacement position reaction extent"
-                << " difference" << (contact_ ? " toolForce toolPosition" : "")
+                << " difference uChannelSpringback shellThickness"
+                << " directorRotation"
+                << (contact_ ? " toolForce toolPosition" : "")
                 << exit(FatalIOError);
         }
         se.statistic = ed.getOrDefault<word>("statistic", "final");
@@ -358,8 +374,14 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
     {
         // NUMISHEET'93 measures of the patch's current node line, ordered
         // by the reference position along the strip (from the symmetry
-        // plane); a profile that is not (yet) a channel gives NaN
+        // plane); a profile that is not (yet) a channel gives NaN. In 3D
+        // the profile lies in the plane x-y (or x-z: 'plane'), and the
+        // nodes with the same reference position in it (a strip in plane
+        // strain: one node on each line across the width, e.g. the shell
+        // nodes at both faces of a one-element-wide strip) are one point
+        // of the profile, their mean current position
         const word patch = ed.get<word>("patch");
+        const label c = ed.getOrDefault<word>("plane", "xy") == "xz" ? 2 : 1;
         const Eigen::MatrixXd X = s.patchPoints(patch, ed, false);
         const Eigen::MatrixXd x = s.patchPoints(patch, ed, true);
         std::vector<label> order(X.rows());
@@ -367,10 +389,41 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         std::sort
         (
             order.begin(), order.end(),
-            [&](label a, label b) { return X(a, 0) < X(b, 0); }
+            [&](label a, label b)
+            {
+                return X(a, 0) < X(b, 0)
+                    || (X(a, 0) == X(b, 0) && X(a, c) < X(b, c));
+            }
         );
+        const scalar tol =
+            1e-9*max
+            (
+                (X.colwise().maxCoeff() - X.colwise().minCoeff()).norm(),
+                VSMALL
+            );
         std::vector<Eigen::Vector2d> profile;
-        for (const label i : order) profile.emplace_back(x(i, 0), x(i, 1));
+        std::vector<Eigen::Vector2d> reference;
+        std::vector<label> count;
+        for (const label i : order)
+        {
+            const Eigen::Vector2d R(X(i, 0), X(i, c));
+            const Eigen::Vector2d p(x(i, 0), x(i, c));
+            if (!reference.empty() && (R - reference.back()).norm() <= tol)
+            {
+                profile.back() += p;
+                ++count.back();
+            }
+            else
+            {
+                reference.push_back(R);
+                profile.push_back(p);
+                count.push_back(1);
+            }
+        }
+        for (std::size_t k = 0; k < profile.size(); ++k)
+        {
+            profile[k] /= count[k];
+        }
         try
         {
             const form::uChannelSpringback m = form::measureUChannel(profile);
