@@ -8,6 +8,7 @@ Description
 #include "elastoPlastic.H"
 #include "logStrain.H"
 #include <cmath>
+#include <optional>
 
 namespace form
 {
@@ -71,13 +72,13 @@ bool elastoPlastic::deviatoric
     state.epsP = committed.history(6);
     state.backStress = committed.history.segment<6>(7);
 
-    // Lagrangian logarithmic strain and the trial elastic strain
+    // Lagrangian logarithmic strain and the trial elastic strain (one
+    // spectral decomposition of C serves E, the stress and the tangent)
     const mat3 C = F.transpose()*F;
-    mat3 E;
-    tensor4 P;
+    std::optional<logStrainMap> map;
     try
     {
-        logStrain(C, E, P);
+        map.emplace(C);
     }
     catch (const numericalError&)
     {
@@ -89,20 +90,26 @@ bool elastoPlastic::deviatoric
     plasticState newState;
     vec6 Tv, dEp;
     mat6 A;
-    if (!plasticity_.update(toVoigtStrain(E) - EpN, state, newState, Tv, A, dEp))
+    if
+    (
+        !plasticity_.update
+        (
+            toVoigtStrain(map->strain()) - EpN, state, newState, Tv, A, dEp
+        )
+    )
     {
         return false;
     }
     const mat3 T = fromVoigtStress(Tv);
 
     // Stress: S = T : P, tau = F S F^T
-    tauDev = F*contract(P, T)*F.transpose();
+    tauDev = F*map->stress(T)*F.transpose();
     // Remove the round-off trace (zero in exact arithmetic: P : C = I)
     tauDev -= tauDev.trace()/3*mat3::Identity();
 
     // Tangent: push-forward of P : A : P + T : L
-    const tensor4 Cm = P*fromVoigt(A)*P + logStrainSecond(C, T);
-    cDev = toVoigt(pushForward(Cm, F));
+    const mat6 R = voigtTransform(F);
+    cDev = R*map->tangent(A, T)*R.transpose();
 
     trial.history.segment<6>(0) = EpN + dEp;
     trial.history(6) = newState.epsP;

@@ -291,6 +291,82 @@ tensor4 logStrainSecond(const mat3& C, const mat3& T)
 }
 
 
+logStrainMap::logStrainMap(const mat3& C)
+{
+    spectralDecomposition(C, lambda_, Q_);
+    const vec3 f = 0.5*lambda_.array().log().matrix();
+    E_ = Q_*f.asDiagonal()*Q_.transpose();
+    E_ = 0.5*(E_ + E_.transpose());
+    F1_ = firstDifferences(lambda_);
+    for (int a = 0; a < 6; ++a) p_(a) = 2*F1_(voigtI[a], voigtJ[a]);
+}
+
+
+mat3 logStrainMap::stress(const mat3& T) const
+{
+    // S~_rs = 2 f[l_r, l_s] T~_rs
+    mat3 St = Q_.transpose()*(0.5*(T + T.transpose()))*Q_;
+    for (int r = 0; r < 3; ++r)
+        for (int s = 0; s < 3; ++s)
+            St(r, s) *= 2*F1_(r, s);
+    const mat3 S = Q_*St*Q_.transpose();
+    return 0.5*(S + S.transpose());
+}
+
+
+mat6 logStrainMap::tangent(const mat6& A, const mat3& T) const
+{
+    if (!T.allFinite())
+    {
+        throw numericalError("logStrainMap: T has non-finite entries");
+    }
+    // Second divided differences, as logStrainSecond
+    double F2[3][3][3];
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int k = i; k < 3; ++k)
+        {
+            for (int j = k; j < 3; ++j)
+            {
+                const double v = secondDividedDifferenceSorted
+                (
+                    lambda_(i), lambda_(k), lambda_(j), F1_(i, k), F1_(k, j)
+                );
+                F2[i][k][j] = F2[i][j][k] = F2[k][i][j] =
+                F2[k][j][i] = F2[j][i][k] = F2[j][k][i] = v;
+            }
+        }
+    }
+    const mat3 Tt = Q_.transpose()*(0.5*(T + T.transpose()))*Q_;
+    auto L0 = [&](int p, int q, int r, int s)
+    {
+        double v = 0;
+        if (q == r) v += Tt(p, s)*F2[p][q][s];
+        if (p == s) v += Tt(r, q)*F2[r][p][q];
+        return v;
+    };
+
+    // Eigenbasis: diag(p) A~ diag(p) + (T : L)~ (the symmetric part of the
+    // latter, as logStrainSecond symmetrises)
+    const mat6 R = voigtTransform(Q_);
+    const mat6 Rt = voigtTransform(Q_.transpose());
+    mat6 M = p_.asDiagonal()*(Rt*A*Rt.transpose())*p_.asDiagonal();
+    mat6 L;
+    for (int a = 0; a < 6; ++a)
+    {
+        const int p = voigtI[a], q = voigtJ[a];
+        for (int b = 0; b < 6; ++b)
+        {
+            const int r = voigtI[b], s = voigtJ[b];
+            L(a, b) = L0(p, q, r, s) + L0(q, p, r, s)
+                    + L0(p, q, s, r) + L0(q, p, s, r);
+        }
+    }
+    M += 0.5*(L + L.transpose());
+    return R*M*R.transpose();
+}
+
+
 mat6 toVoigt(const tensor4& A)
 {
     mat6 M;
