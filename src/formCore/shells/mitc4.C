@@ -323,9 +323,9 @@ void mitc4::addPlusSecond
     double r,
     double s,
     const basis& bm,
-    const membraneTies& ties,
     const vec3& mSum,
     const std::array<shellNodeState, 4>& nodes,
+    Eigen::Matrix<double, 5, 1>& omega,
     matQ& K
 ) const
 {
@@ -333,11 +333,7 @@ void mitc4::addPlusSecond
     addSecond(bm, 0, 0, -0.5*mSum(0), nodes, K);
     addSecond(bm, 1, 1, -0.5*mSum(1), nodes, K);
     addSecond(bm, 0, 1, -mSum(2), nodes, K);
-    const Eigen::Matrix<double, 5, 1> omega = plusWeights(r, s).transpose()*mSum;
-    for (int p = 0; p < 5; ++p)
-    {
-        addSecond(ties.b[p], tieMij[p][0], tieMij[p][1], omega(p), nodes, K);
-    }
+    omega += plusWeights(r, s).transpose()*mSum;
 }
 
 
@@ -367,9 +363,14 @@ bool mitc4::integrate
     membraneTies ties;
     if (plus_) ties = tieMembrane(nodes);
     const membraneTies* tp = plus_ ? &ties : nullptr;
-    // The shear tying bases of each point through the thickness
+    // The shear tying bases of each point through the thickness, and the
+    // weights of their second derivatives summed over the in-plane points
+    // (the bases do not depend on r, s: one product per tying point and
+    // layer instead of one per integration point)
     std::vector<std::array<basis, 4>> tieB(nThickness_);
     for (int it = 0; it < nThickness_; ++it) tieB[it] = tieShear(zt[it], nodes);
+    std::vector<std::array<double, 4>> tieW(nThickness_, {0, 0, 0, 0});
+    Eigen::Matrix<double, 5, 1> omega = Eigen::Matrix<double, 5, 1>::Zero();
     int q = 0;
     for (double r : pts)
     for (double s : pts)
@@ -417,11 +418,25 @@ bool mitc4::integrate
                 const double wp = rt
                   ? 0.5*(1 + tie[p][1]*s)
                   : 0.5*(1 + tie[p][0]*r);
-                addSecond(tieB[it][p], rt ? 0 : 1, 2, wp*m(rt ? 3 : 4), nodes, *K);
+                tieW[it][p] += wp*m(rt ? 3 : 4);
             }
             mSum += m.head<3>();
         }
-        if (plus_ && K) addPlusSecond(r, s, bm, ties, mSum, nodes, *K);
+        if (plus_ && K) addPlusSecond(r, s, bm, mSum, nodes, omega, *K);
+    }
+    if (K)
+    {
+        for (int p = 0; plus_ && p < 5; ++p)
+        {
+            addSecond(ties.b[p], tieMij[p][0], tieMij[p][1], omega(p), nodes, *K);
+        }
+        for (int it = 0; it < nThickness_; ++it)
+        {
+            for (int p = 0; p < 4; ++p)
+            {
+                addSecond(tieB[it][p], p < 2 ? 0 : 1, 2, tieW[it][p], nodes, *K);
+            }
+        }
     }
     return true;
 }
