@@ -36,13 +36,19 @@ Description
     (0,1,2,3) (0,1,5,4) (0,3,7,4) (1,2,6,5) (2,3,7,6) (4,5,6,7); 26 the
     centre. Every mid node is checked to lie near its edge, face or cell.
 
+    With -shell <thickness>, a surface mesh of first-order quadrangles or
+    triangles becomes the mid-surface of a shell region (MITC4, MITC4+ or
+    MITC3+): a sheet one cell thick, patches bottom, top, one per physical
+    curve (named edges for boundary conditions) and sides
+    (gmshShellSheet.H).
+
     Not converted (a message names the element): other cell shapes
     (tetrahedra, prisms, pyramids), 20-node hexahedra (set
     Mesh.SecondOrderIncomplete = 0), triangles in a physical surface,
     binary files.
 
 Usage
-    gmshToFormFoam [-case dir] [-region name] <file.msh>
+    gmshToFormFoam [-case dir] [-region name] [-shell thickness] <file.msh>
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
@@ -52,7 +58,9 @@ Usage
 #include "IFstream.H"
 #include "pointIOField.H"
 #include "OSspecific.H"
+#include "unitConversion.H"
 #include <map>
+#include <set>
 #include <unordered_map>
 #include <sstream>
 
@@ -73,7 +81,7 @@ struct mshFile
 {
     fileName name;
     std::unordered_map<label, point> nodes;
-    std::map<label, std::pair<label, word>> physicalNames;  //!< tag -> (dim, name)
+    std::map<std::pair<label, label>, word> physicalNames;  //!< (dim, tag) -> name
     std::vector<mshElement> elements;
 };
 
@@ -151,7 +159,7 @@ mshFile readMsh(const fileName& file)
                 std::getline(is, name);
                 const auto a = name.find('"'), b = name.rfind('"');
                 if (a == std::string::npos || b <= a) bad(file, "a physical name without quotes");
-                m.physicalNames[tag] = {dim, word::validate(name.substr(a + 1, b - a - 1))};
+                m.physicalNames[{dim, tag}] = word::validate(name.substr(a + 1, b - a - 1));
             }
         }
         else if (line.rfind("$Entities", 0) == 0 && version >= 4)
@@ -309,6 +317,8 @@ const FixedList<label, 27>& gmshHex27Lattice()
 
 } // anonymous namespace
 
+#include "gmshShellSheet.H"
+
 
 int main(int argc, char *argv[])
 {
@@ -321,12 +331,82 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::addArgument("file.msh");
     argList::addOption("region", "name", "The solid region (default: solid)");
+    argList::addOption
+    (
+        "shell", "thickness",
+        "A surface mesh of first-order quadrangles or triangles as the"
+        " mid-surface of a shell region: written as a sheet one cell thick"
+        " (hexahedra or prisms) of this thickness; physical curves become"
+        " side patches, the faces the patches bottom and top"
+    );
     #include "setRootCase.H"
     #include "createTime.H"
 
     const fileName mshName = args[1];
     const word region = args.getOrDefault<word>("region", "solid");
     const mshFile m = readMsh(mshName);
+    const fileName meshDir = runTime.constant()/region/polyMesh::meshSubDir;
+
+    // Writes the polyMesh of the cells, the named patches and the
+    // remaining boundary faces in defaultPatch
+    const auto writeMesh = [&]
+    (
+        pointField&& points,
+        const cellShapeList& shapes,
+        const faceListList& patchFaces,
+        const wordList& patchNames,
+        const word& defaultPatch
+    )
+    {
+        if (isDir(runTime.path()/meshDir)) rmDir(runTime.path()/meshDir);
+        autoPtr<polyMesh> mesh
+        (
+            new polyMesh
+            (
+                IOobject(region, runTime.constant(), runTime),
+                std::move(points),
+                shapes,
+                patchFaces,
+                patchNames,
+                wordList(patchNames.size(), "patch"),
+                defaultPatch,
+                "patch",
+                wordList(patchNames.size(), word::null)
+            )
+        );
+        mesh->removeFiles();
+        if (!mesh->write())
+        {
+            FatalErrorInFunction << "Cannot write " << meshDir << exit(FatalError);
+        }
+        return mesh;
+    };
+
+    if (args.found("shell"))
+    {
+        scalar t = 0;
+        if (!readScalar(args["shell"], t) || !std::isfinite(t) || !(t > 0))
+        {
+            FatalErrorInFunction
+                << "option -shell: the thickness must be a positive number, not "
+                << args["shell"] << exit(FatalError);
+        }
+        shellSheet S = gmshShellSheet(m, t);
+        const autoPtr<polyMesh> mesh = writeMesh
+        (
+            pointField(std::move(S.points)), S.shapes, S.patchFaces,
+            S.patchNames, "sides"
+        );
+        Info<< "gmshToFormFoam: " << mshName << " -> " << meshDir << ": "
+            << S.nElements << (S.triangles ? " triangles" : " quadrangles")
+            << " as a shell sheet of thickness " << t << " ("
+            << (S.triangles ? "prisms: MITC3+" : "hexahedra: MITC4, MITC4+")
+            << "), " << mesh->nPoints()/2 << " shell nodes, the largest angle"
+            << " between an element's and a node's normal "
+            << S.largestTilt << " deg, patches "
+            << mesh->boundaryMesh().names() << endl;
+        return 0;
+    }
 
     // Hexahedra -> cells (corner points renumbered), lattices
     std::unordered_map<label, label> pointOf;
@@ -403,7 +483,8 @@ int main(int argc, char *argv[])
     }
     if (shapes.empty())
     {
-        bad(mshName, "has no hexahedra (Gmsh types 5 or 12)");
+        bad(mshName, "has no hexahedra (Gmsh types 5 or 12); a surface mesh"
+            " of a shell region is converted with -shell <thickness>");
     }
     if (anyHex8 && anyHex27)
     {
@@ -436,39 +517,23 @@ int main(int argc, char *argv[])
         groups[e.physical].append(f);
     }
     faceListList patchFaces;
-    wordList patchNames, patchTypes, physicalTypes;
+    wordList patchNames;
     for (const auto& g : groups)
     {
-        const auto n = m.physicalNames.find(g.first);
+        const auto n = m.physicalNames.find({2, g.first});
         patchNames.append
         (
-            n != m.physicalNames.end() ? n->second.second
+            n != m.physicalNames.end() ? n->second
           : word("physical" + Foam::name(g.first))
         );
-        patchTypes.append("patch");
-        physicalTypes.append(word::null);
         patchFaces.append(g.second);
     }
-
-    const fileName meshDir = runTime.constant()/region/polyMesh::meshSubDir;
-    if (isDir(runTime.path()/meshDir)) rmDir(runTime.path()/meshDir);
-    polyMesh mesh
+    const autoPtr<polyMesh> meshPtr = writeMesh
     (
-        IOobject(region, runTime.constant(), runTime),
-        pointField(std::move(points)),
-        shapes,
-        patchFaces,
-        patchNames,
-        patchTypes,
-        "defaultFaces",
-        "patch",
-        physicalTypes
+        pointField(std::move(points)), shapes, patchFaces, patchNames,
+        "defaultFaces"
     );
-    mesh.removeFiles();
-    if (!mesh.write())
-    {
-        FatalErrorInFunction << "Cannot write " << meshDir << exit(FatalError);
-    }
+    const polyMesh& mesh = *meshPtr;
     if (anyHex27)
     {
         pointIOField P
