@@ -30,6 +30,12 @@
 #         edge of three elements (a branch), a fold of 120 deg, a
 #         physical curve inside the surface, a thickness that is not a
 #         positive number, a surface mesh without -shell.
+#      d. Any surface file OpenFOAM reads: the clamped plate of triangles
+#         (shellPlateTriangles, an OBJ file) through gmshToFormFoam -shell
+#         gives the deflection of its extrudeMesh route (the same sheet)
+#         to 1e-12; the OBJ with a fin on an interior edge (non-manifold:
+#         extrudeMesh writes an invalid mesh from it) is refused naming
+#         the edge.
 . "$(dirname "$0")/testFunctions"
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamMeshes.XXXXXX")
@@ -164,4 +170,22 @@ expectFailure "Gmsh shell thickness -0.25 refused" $? "$c/log.bad" \
 (cd "$c" && gmshToFormFoam -region roof roof.msh > log.bad 2>&1)
 expectFailure "Gmsh surface mesh without -shell refused" $? "$c/log.bad" \
     "has no hexahedra \\(Gmsh types 5 or 12\\); a surface mesh of a shell region is converted with -shell"
+
+# 6d. Surface files
+c=$work/plateExtrude
+runCopy shellPlateTriangles "$c" "" "./makeMesh 8" \
+    || fail "clamped plate of triangles, extrudeMesh (see $c/log.formFoam)"
+wExtrude=$(summaryValue "$c" wCentre)
+c=$work/plateSurface
+runCopy shellPlateTriangles "$c" "" "./makeMesh 8 -surface" \
+    || fail "clamped plate of triangles, gmshToFormFoam -shell (see $c/log.*)"
+checkClose "plate of triangles from the OBJ by gmshToFormFoam -shell: w = extrudeMesh route" \
+    "$(summaryValue "$c" wCentre)" "$wExtrude" 1e-12
+(
+    cd "$c" && echo "v 0.5 0.5 0.4" >> constant/triSurface/plate.obj \
+        && echo "f 41 42 82" >> constant/triSurface/plate.obj \
+        && gmshToFormFoam -region plate -shell 0.01 constant/triSurface/plate.obj > log.bad 2>&1
+)
+expectFailure "non-manifold surface file (a fin on an interior edge) refused" $? "$c/log.bad" \
+    'Surface file "constant/triSurface/plate.obj": the edge between nodes 41 and 42 is shared by 3 elements'
 rm -rf "$work"

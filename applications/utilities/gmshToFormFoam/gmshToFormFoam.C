@@ -40,7 +40,10 @@ Description
     triangles becomes the mid-surface of a shell region (MITC4, MITC4+ or
     MITC3+): a sheet one cell thick, patches bottom, top, one per physical
     curve (named edges for boundary conditions) and sides
-    (gmshShellSheet.H).
+    (gmshShellSheet.H). With -shell the file may also be any surface
+    format of OpenFOAM's surface readers (STL, OBJ, VTK, ...: every
+    boundary edge in the patch sides, which topoSet and createPatch
+    split, e.g. tests/cases/shellPlateTriangles/makeMesh -surface).
 
     Not converted (a message names the element): other cell shapes
     (tetrahedra, prisms, pyramids), 20-node hexahedra (set
@@ -59,6 +62,7 @@ Usage
 #include "pointIOField.H"
 #include "OSspecific.H"
 #include "unitConversion.H"
+#include "MeshedSurfaces.H"
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -88,7 +92,8 @@ struct mshFile
 [[noreturn]] void bad(const fileName& f, const std::string& msg)
 {
     FatalErrorInFunction
-        << "Gmsh file " << f << ": " << msg.c_str() << exit(FatalError);
+        << (f.ext() == "msh" ? "Gmsh file " : "Surface file ") << f << ": "
+        << msg.c_str() << exit(FatalError);
     std::exit(1);
 }
 
@@ -281,6 +286,47 @@ mshFile readMsh(const fileName& file)
     return m;
 }
 
+// A surface file in any format of OpenFOAM's surface readers (STL, OBJ,
+// VTK, ...) as the elements of a Gmsh surface mesh: its triangles and
+// quadrangles (no physical groups: the boundary edges become the patch
+// sides, which topoSet and createPatch can split)
+mshFile readSurface(const fileName& file)
+{
+    if (!isFile(file)) bad(file, "cannot be opened");
+    mshFile m;
+    m.name = file;
+    meshedSurface surf;
+    try
+    {
+        FatalError.throwExceptions();
+        FatalIOError.throwExceptions();
+        surf = meshedSurface(file);
+    }
+    catch (const Foam::error& e)
+    {
+        bad(file, "cannot be read as a surface (" + e.message() + ")");
+    }
+    FatalError.dontThrowExceptions();
+    FatalIOError.dontThrowExceptions();
+    forAll(surf.points(), i) m.nodes[i + 1] = surf.points()[i];
+    forAll(surf.surfFaces(), i)
+    {
+        const face& f = surf.surfFaces()[i];
+        if (f.size() != 3 && f.size() != 4)
+        {
+            bad(file, "face " + std::to_string(i) + " has " + std::to_string(f.size())
+                + " corners; shells are quadrangles or triangles");
+        }
+        mshElement e;
+        e.tag = i + 1;
+        e.type = f.size() == 4 ? 3 : 2;
+        e.physical = -1;
+        for (const label v : f) e.nodes.push_back(v + 1);
+        m.elements.push_back(std::move(e));
+    }
+    return m;
+}
+
 // Lattice index (a + 3 b + 9 c) of the nodes of a Gmsh Hexahedron27
 const FixedList<label, 27>& gmshHex27Lattice()
 {
@@ -344,7 +390,10 @@ int main(int argc, char *argv[])
 
     const fileName mshName = args[1];
     const word region = args.getOrDefault<word>("region", "solid");
-    const mshFile m = readMsh(mshName);
+    // -shell: any surface format OpenFOAM reads (STL, OBJ, VTK, ...)
+    // besides Gmsh's
+    const mshFile m = args.found("shell") && mshName.ext() != "msh"
+      ? readSurface(mshName) : readMsh(mshName);
     const fileName meshDir = runTime.constant()/region/polyMesh::meshSubDir;
 
     // Writes the polyMesh of the cells, the named patches and the
