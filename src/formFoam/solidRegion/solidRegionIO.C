@@ -88,7 +88,11 @@ bool Foam::solidRegion::write()
     form::matX dNc;
     if (shells)
     {
-        Nc = form::vecX::Constant(4, 0.25);     // the mid-surface's centre
+        // the mid-surface's centre (MITC4: 4 nodes, MITC3+: 3)
+        Nc = form::vecX::Constant
+        (
+            blk.nodesPerElement, 1.0/blk.nodesPerElement
+        );
     }
     else
     {
