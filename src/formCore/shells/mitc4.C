@@ -152,6 +152,68 @@ mitc4::basis mitc4::at
 }
 
 
+namespace
+{
+
+//- The rotation dofs of the four nodes
+const std::array<int, 4> rotationDofs = {3, 8, 13, 18};
+
+//- The nodes' director states
+std::array<const directorState*, 4> directors
+(
+    const std::array<shellNodeState, 4>& nodes
+)
+{
+    return {&nodes[0].director, &nodes[1].director, &nodes[2].director,
+            &nodes[3].director};
+}
+
+} // anonymous namespace
+
+
+void mitc4::addMembraneSecond
+(
+    double r,
+    double s,
+    const double (&moment)[3][3],
+    const std::array<shellNodeState, 4>& nodes,
+    matQ& K
+) const
+{
+    // D_i(t) = D0_i + t D1_i (at: the translations' columns do not
+    // depend on t, the rotations' are proportional to it), so with the
+    // weights' moments W_n = sum_t w(t) t^n
+    //   sum_t w (D_i^T D_j + D_j^T D_i)
+    //     = S^T M S,  S = [D0_r; D1_r; D0_s; D1_s],
+    // M of 3 x 3 blocks (scaled identities) from W_0, W_1, W_2
+    const basis b0 = at(r, s, 0, nodes), b1 = at(r, s, 1, nodes);
+    Eigen::Matrix<double, 12, nDofs> S;
+    S << b0.D[0], b1.D[0] - b0.D[0], b0.D[1], b1.D[1] - b0.D[1];
+    double M[4][4] = {};
+    for (int k = 0; k < 2; ++k)         // rr (blocks 0, 1), ss (2, 3)
+    {
+        const int o = 2*k;
+        M[o][o] += 2*moment[0][k];
+        M[o][o + 1] += 2*moment[1][k];
+        M[o + 1][o] += 2*moment[1][k];
+        M[o + 1][o + 1] += 2*moment[2][k];
+    }
+    const double w[3] = {moment[0][2], moment[1][2], moment[2][2]};
+    M[0][2] += w[0]; M[2][0] += w[0];   // rs
+    M[0][3] += w[1]; M[3][0] += w[1];
+    M[1][2] += w[1]; M[2][1] += w[1];
+    M[1][3] += w[2]; M[3][1] += w[2];
+    Eigen::Matrix<double, 12, nDofs> MS;
+    for (int a = 0; a < 4; ++a)
+    {
+        MS.middleRows<3>(3*a) =
+            M[a][0]*S.middleRows<3>(0) + M[a][1]*S.middleRows<3>(3)
+          + M[a][2]*S.middleRows<3>(6) + M[a][3]*S.middleRows<3>(9);
+    }
+    K.noalias() += S.transpose().lazyProduct(MS);
+}
+
+
 void mitc4::addSecond
 (
     const basis& b,
@@ -380,6 +442,7 @@ bool mitc4::integrate
         basis bm;
         if (plus_) bm = at(r, s, 0, nodes);
         vec3 mSum = vec3::Zero();
+        double moment[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
         for (int it = 0; it < nThickness_; ++it, ++q)
         {
             const double t = zt[it];
@@ -409,9 +472,21 @@ bool mitc4::integrate
             if (!K) continue;
             // Geometric part: the covariant stress resultants T^T S
             // times the second derivatives of the covariant strains
-            addSecond(b, 0, 0, 0.5*m(0), nodes, *K);
-            addSecond(b, 1, 1, 0.5*m(1), nodes, *K);
-            addSecond(b, 0, 1, m(2), nodes, *K);
+            // (the D_i^T D_j terms through the thickness at once below:
+            // their weights' moments in t)
+            const double wm[3] = {0.5*m(0), 0.5*m(1), m(2)};
+            const int ij[3][2] = {{0, 0}, {1, 1}, {0, 1}};
+            for (int k = 0; k < 3; ++k)
+            {
+                addShellDirectorSecond<4, nDofs>
+                (
+                    b, ij[k][0], ij[k][1], wm[k], directors(nodes),
+                    rotationDofs, *K
+                );
+                moment[0][k] += wm[k];
+                moment[1][k] += wm[k]*t;
+                moment[2][k] += wm[k]*t*t;
+            }
             for (int p = 0; p < 4; ++p)
             {
                 const bool rt = p < 2;
@@ -422,6 +497,7 @@ bool mitc4::integrate
             }
             mSum += m.head<3>();
         }
+        if (K) addMembraneSecond(r, s, moment, nodes, *K);
         if (plus_ && K) addPlusSecond(r, s, bm, mSum, nodes, omega, *K);
     }
     if (K)
@@ -430,12 +506,25 @@ bool mitc4::integrate
         {
             addSecond(ties.b[p], tieMij[p][0], tieMij[p][1], omega(p), nodes, *K);
         }
-        for (int it = 0; it < nThickness_; ++it)
+        // The shear ties: D_t does not depend on t, so the sum through
+        // the thickness of w (D_i^T D_t + D_t^T D_i) is one product with
+        // the weighted sum of D_i
+        for (int p = 0; p < 4; ++p)
         {
-            for (int p = 0; p < 4; ++p)
+            const int i = p < 2 ? 0 : 1;
+            Eigen::Matrix<double, 3, nDofs> Dsum =
+                Eigen::Matrix<double, 3, nDofs>::Zero();
+            for (int it = 0; it < nThickness_; ++it)
             {
-                addSecond(tieB[it][p], p < 2 ? 0 : 1, 2, tieW[it][p], nodes, *K);
+                Dsum += tieW[it][p]*tieB[it][p].D[i];
+                addShellDirectorSecond<4, nDofs>
+                (
+                    tieB[it][p], i, 2, tieW[it][p], directors(nodes),
+                    rotationDofs, *K
+                );
             }
+            const matQ DD = Dsum.transpose().lazyProduct(tieB[0][p].D[2]);
+            *K += DD + DD.transpose();
         }
     }
     return true;
