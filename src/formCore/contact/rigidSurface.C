@@ -123,54 +123,81 @@ public:
 };
 
 
-class revolvedProfile : public rigidSurface
+//- A profile in the (r, z) half-plane swept around a rectangular core
+//  (revolved about the axis when the core is a point: rigidSurface.H)
+class sweptProfile : public rigidSurface
 {
     std::shared_ptr<rigidProfile> profile_;
-    vec3 o_, a_;
+    vec3 o_, a_, e1_, e2_;
+    double A_, B_;
+    bool revolved_;
 public:
-    explicit revolvedProfile(const surfaceInput& in)
+    sweptProfile(const surfaceInput& in, bool revolved)
     :
         profile_(in.profile),
         o_(in.vector("origin")),
-        a_(in.direction("axis"))
+        a_(in.direction("axis")),
+        A_(0),
+        B_(0),
+        revolved_(revolved)
     {
         if (!profile_)
         {
-            throw inputError("profile", "revolvedProfile needs a profile");
+            throw inputError("profile", type() + " needs a profile");
+        }
+        const vec3 trial = revolved
+          ? (std::abs(a_(0)) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0))
+          : in.direction("xAxis");
+        const vec3 w = trial - a_*a_.dot(trial);
+        if (!(w.norm() > 1e-6))
+        {
+            throw inputError("xAxis", "entry 'xAxis' is parallel to 'axis'");
+        }
+        e1_ = w.normalized();
+        e2_ = a_.cross(e1_);
+        if (!revolved)
+        {
+            A_ = in.nonNegative("coreX");
+            B_ = in.nonNegative("coreY");
         }
     }
-    std::string type() const override { return "revolvedProfile"; }
+    std::string type() const override
+    {
+        return revolved_ ? "revolvedProfile" : "sweptProfile";
+    }
     surfaceProjection project(const vec3& y) const override
     {
         const vec3 d = y - o_;
         const double z = a_.dot(d);
-        const vec3 radial = d - z*a_;
+        // The closest point of the core in the plane normal to the axis
+        const double x1 = e1_.dot(d), x2 = e2_.dot(d);
+        const double c1 = std::max(-A_, std::min(A_, x1));
+        const double c2 = std::max(-B_, std::min(B_, x2));
+        const vec3 radial = (x1 - c1)*e1_ + (x2 - c2)*e2_;
         const double r = radial.norm();
-        // radial direction; on the axis any normal to it
-        vec3 er;
-        if (r > 1e-12*(1 + d.norm()))
-        {
-            er = radial/r;
-        }
-        else
-        {
-            const vec3 trial =
-                std::abs(a_(0)) < 0.9 ? vec3(1, 0, 0) : vec3(0, 1, 0);
-            er = (trial - a_*a_.dot(trial)).normalized();
-        }
+        const double size = 1 + d.norm();
+        // radial direction; on the core any normal to the axis
+        const vec3 er = r > 1e-12*size ? vec3(radial/r) : e1_;
         const vec3 et = a_.cross(er);
         const profileProjection q = profile_->project(Eigen::Vector2d(r, z));
-        Eigen::Matrix<double, 3, 2> B;
-        B.col(0) = er;
-        B.col(1) = a_;
+        Eigen::Matrix<double, 3, 2> Bm;
+        Bm.col(0) = er;
+        Bm.col(1) = a_;
         surfaceProjection P;
         P.gap = q.gap;
-        P.normal = B*q.normal;
-        // n_r/r, its limit dn_r/dr on the axis
-        const double nrOverR =
-            r > 1e-12*(1 + d.norm()) ? q.normal(0)/r : q.dNormalDY(0, 0);
-        P.dNormalDY =
-            B*q.dNormalDY*B.transpose() + nrOverR*et*et.transpose();
+        P.normal = Bm*q.normal;
+        P.dNormalDY = Bm*q.dNormalDY*Bm.transpose();
+        // e_r turns about the axis where the core's closest point is a
+        // corner (or the point core): de_r/dy = e_t e_t^T/r; along a side
+        // it is constant. n_r/r has the limit dn_r/dr on the axis.
+        const bool corner =
+            std::abs(x1) >= A_ && std::abs(x2) >= B_;
+        if (corner)
+        {
+            const double nrOverR =
+                r > 1e-12*size ? q.normal(0)/r : q.dNormalDY(0, 0);
+            P.dNormalDY += nrOverR*et*et.transpose();
+        }
         return P;
     }
 };
@@ -198,7 +225,11 @@ const bool registered = []()
     };
     reg["revolvedProfile"] = [](const surfaceInput& in)
     {
-        return std::unique_ptr<rigidSurface>(new revolvedProfile(in));
+        return std::unique_ptr<rigidSurface>(new sweptProfile(in, true));
+    };
+    reg["sweptProfile"] = [](const surfaceInput& in)
+    {
+        return std::unique_ptr<rigidSurface>(new sweptProfile(in, false));
     };
     return true;
 }();
@@ -229,6 +260,25 @@ vec3 surfaceInput::direction(const std::string& name) const
         throw inputError(name, "entry '" + name + "' is not a direction (zero)");
     }
     return v.normalized();
+}
+
+
+double surfaceInput::nonNegative(const std::string& name) const
+{
+    const auto it = scalars.find(name);
+    if (it == scalars.end())
+    {
+        throw inputError(name, "missing entry '" + name + "'");
+    }
+    if (!(it->second >= 0) || !std::isfinite(it->second))
+    {
+        throw inputError
+        (
+            name, "entry '" + name + "' = " + std::to_string(it->second)
+          + " must be zero or positive"
+        );
+    }
+    return it->second;
 }
 
 

@@ -153,6 +153,7 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
         {"cylinder", {"point", "axis", "radius"}},
         {"extrudedProfile", {"origin", "xAxis", "yAxis", "profile", "radii", "radius"}},
         {"revolvedProfile", {"origin", "axis", "profile", "radii", "radius"}},
+        {"sweptProfile", {"origin", "axis", "xAxis", "coreX", "coreY", "profile", "radii", "radius"}},
         {"triSurface", {"file", "flipNormals", "featureAngle"}}
     };
     const auto it = keys.find(type);
@@ -170,13 +171,19 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
     std::map<std::string, double> scalars;
     std::shared_ptr<form::rigidProfile> profile;
     const bool profiled =
-        type == "extrudedProfile" || type == "revolvedProfile";
+        type == "extrudedProfile" || type == "revolvedProfile"
+     || type == "sweptProfile";
     for (const word& k : it->second)
     {
         if (k == "profile" || k == "radii" || k == "file") continue;
         if (k == "flipNormals")
         {
             scalars[k] = sd.getOrDefault<bool>(k, false) ? 1 : 0;
+            continue;
+        }
+        if (k == "coreX" || k == "coreY")
+        {
+            if (sd.found(k)) scalars[k] = sd.get<scalar>(k);
             continue;
         }
         if (k == "featureAngle")

@@ -1,7 +1,7 @@
 // Rigid tool surfaces in 3D (rigidSurface.H): the plane, sphere and
 // cylinder in closed form, 2D profiles extruded along a direction and
-// revolved about an axis (through the tested rigidProfile projection with
-// exact curvature). For each: the gap against a brute-force distance to
+// revolved about an axis or swept around a rectangular core (through the
+// tested rigidProfile projection with exact curvature). For each: the gap against a brute-force distance to
 // the surface, the normal, and dg/dy = n, dn/dy against central
 // differences at random points on both sides of the surface; the
 // tangent frame (tangentFrame) and its derivatives. FD tolerances about
@@ -126,6 +126,96 @@ TEST(rigidSurface, revolvedProfileMakesASphericalPunch)
     // on the axis: finite derivatives, the sphere's
     const vec3 pole(0, 0, 3.5);
     EXPECT_LT((ball->project(pole).dNormalDY - sphere->project(pole).dNormalDY).norm(), 1e-9);
+}
+
+TEST(rigidSurface, sweptProfileIsExtrudedAlongSidesAndRevolvedAtCorners)
+{
+    // A rounded-rectangle punch: the core [-3, 3] x [-2, 2] about the
+    // axis z, its sides along e1 = (1, 1, 0)/sqrt 2; in the (r, z)
+    // half-plane the wall r = 4 and the face z = 0 with a nose radius 1.5
+    // (the tool below the face and inside the wall). Along a side it is
+    // the outline extruded (r = the distance from that side), at a
+    // corner the outline revolved about the corner's axis.
+    const std::vector<Eigen::Vector2d> pts{{4, -10}, {4, 0}, {0, 0}};
+    const auto outline = std::make_shared<rigidProfile>(pts, std::vector<double>{1.5});
+    const vec3 a(0, 0, 1), e1 = vec3(1, 1, 0).normalized(), e2 = a.cross(e1);
+    const vec3 o(1, -2, 0.5);
+    const auto punch = rigidSurface::New
+    (
+        "sweptProfile",
+        {{"origin", o}, {"axis", a}, {"xAxis", vec3(1, 1, 0.3)}},
+        {{"coreX", 3.0}, {"coreY", 2.0}},
+        outline
+    );
+    const auto corner = rigidSurface::New
+    (
+        "revolvedProfile",
+        {{"origin", vec3(o + 3*e1 + 2*e2)}, {"axis", a}},
+        {},
+        outline
+    );
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int k = 0; k < 40; ++k)
+    {
+        const double z = -3 + 5*u(gen);
+        // along the side x1 = 3 (|x2| < 2) and beyond the corner (3, 2)
+        const double x1 = 3.05 + 3*u(gen);
+        const double xSide = -1.9 + 3.8*u(gen), xCorner = 2.05 + 3*u(gen);
+        const vec3 ySide = o + x1*e1 + xSide*e2 + z*a;
+        const vec3 yCorner = o + x1*e1 + xCorner*e2 + z*a;
+        const surfaceProjection S = punch->project(ySide);
+        const profileProjection q = outline->project(Eigen::Vector2d(x1 - 3, z));
+        EXPECT_NEAR(S.gap, q.gap, 1e-12);
+        EXPECT_LT((S.normal - (q.normal(0)*e1 + q.normal(1)*a)).norm(), 1e-12);
+        checkDerivatives(*punch, ySide, "swept punch, side");
+        const surfaceProjection C = punch->project(yCorner), R = corner->project(yCorner);
+        EXPECT_NEAR(C.gap, R.gap, 1e-12);
+        EXPECT_LT((C.normal - R.normal).norm(), 1e-12);
+        EXPECT_LT((C.dNormalDY - R.dNormalDY).norm(), 1e-12*(1 + R.dNormalDY.norm()));
+        checkDerivatives(*punch, yCorner, "swept punch, corner");
+    }
+    // Over the core: the flat face, gap = height
+    const surfaceProjection top = punch->project(o + 1.0*e1 - 0.5*e2 + 0.7*a);
+    EXPECT_NEAR(top.gap, 0.7, 1e-12);
+    EXPECT_LT((top.normal - a).norm(), 1e-12);
+    // A core of zero size is the revolved outline
+    const auto point = rigidSurface::New
+    (
+        "sweptProfile",
+        {{"origin", vec3(o + 3*e1 + 2*e2)}, {"axis", a}, {"xAxis", e1}},
+        {{"coreX", 0.0}, {"coreY", 0.0}},
+        outline
+    );
+    const vec3 y = o + 4*e1 + 3.5*e2 - 0.3*a;
+    EXPECT_NEAR(point->project(y).gap, corner->project(y).gap, 1e-14);
+    // Bad input names the entry
+    for (const auto& bad : std::vector<std::pair<std::string, std::map<std::string, double>>>
+         {{"coreX", {{"coreX", -1.0}, {"coreY", 2.0}}}, {"coreY", {{"coreX", 1.0}}}})
+    {
+        try
+        {
+            rigidSurface::New
+            (
+                "sweptProfile", {{"origin", o}, {"axis", a}, {"xAxis", e1}},
+                bad.second, outline
+            );
+            ADD_FAILURE() << "no error for " << bad.first;
+        }
+        catch (const inputError& e)
+        {
+            EXPECT_NE(std::string(e.what()).find(bad.first), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_THROW
+    (
+        rigidSurface::New
+        (
+            "sweptProfile", {{"origin", o}, {"axis", a}, {"xAxis", vec3(0, 0, 2)}},
+            {{"coreX", 1.0}, {"coreY", 1.0}}, outline
+        ),
+        inputError
+    );
 }
 
 TEST(rigidSurface, tangentFrameAndItsDerivatives)
