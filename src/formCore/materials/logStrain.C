@@ -138,6 +138,54 @@ mat3 firstDifferences(const vec3& lambda)
     return F1;
 }
 
+//- Table of second divided differences F2[i][k][j] = f[l_i, l_k, l_j]
+//  (lambda ascending, F1 its first differences): (i <= k <= j) lists
+//  each multiset once, sorted
+void secondDifferences(const vec3& lambda, const mat3& F1, double F2[3][3][3])
+{
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int k = i; k < 3; ++k)
+        {
+            for (int j = k; j < 3; ++j)
+            {
+                const double v = secondDividedDifferenceSorted
+                (
+                    lambda(i), lambda(k), lambda(j), F1(i, k), F1(k, j)
+                );
+                F2[i][k][j] = F2[i][j][k] = F2[k][i][j] =
+                F2[k][j][i] = F2[j][i][k] = F2[j][k][i] = v;
+            }
+        }
+    }
+}
+
+
+//- (T : L)~_pqrs in the eigenbasis (Tt = T~ symmetric). The bilinear
+//  form sum_ij T_ij d2E_ij[H, K] in the eigenbasis,
+//    B = sum_(i,k,j) T~_ij F2_ikj (H~_ik K~_kj + K~_ik H~_kj),
+//  has the unsymmetrised second derivative d2B/dH~_pq dK~_rs
+//    L0_pqrs = d_qr T~_ps F2_pqs + d_ps T~_rq F2_rpq;
+//  for symmetric perturbations 4 sym_(pq) sym_(rs) L0 is the sum of the
+//  four index swaps
+double tlEntry
+(
+    const mat3& Tt,
+    const double F2[3][3][3],
+    int a, int b, int c, int d
+)
+{
+    auto L0 = [&](int p, int q, int r, int s)
+    {
+        double v = 0;
+        if (q == r) v += Tt(p, s)*F2[p][q][s];
+        if (p == s) v += Tt(r, q)*F2[r][p][q];
+        return v;
+    };
+    return L0(a, b, c, d) + L0(b, a, c, d) + L0(a, b, d, c) + L0(b, a, d, c);
+}
+
+
 //- Kronecker product K(3 i + j, 3 I + J) = F_iI F_jJ, so that
 //  (K A K^T)_ijkl = F_iI F_jJ F_kK F_lL A_IJKL
 tensor4 kron(const mat3& F)
@@ -243,49 +291,16 @@ tensor4 logStrainSecond(const mat3& C, const mat3& T)
     mat3 Q;
     spectralDecomposition(C, lambda, Q);
 
-    // Second divided differences F2[i][k][j] = f[l_i, l_k, l_j]; lambda is
-    // ascending, so (i <= k <= j) lists each multiset once, sorted
     const mat3 F1 = firstDifferences(lambda);
     double F2[3][3][3];
-    for (int i = 0; i < 3; ++i)
-    {
-        for (int k = i; k < 3; ++k)
-        {
-            for (int j = k; j < 3; ++j)
-            {
-                const double v = secondDividedDifferenceSorted
-                (
-                    lambda(i), lambda(k), lambda(j), F1(i, k), F1(k, j)
-                );
-                F2[i][k][j] = F2[i][j][k] = F2[k][i][j] =
-                F2[k][j][i] = F2[j][i][k] = F2[j][k][i] = v;
-            }
-        }
-    }
-
-    // Bilinear form sum_ij T_ij d2E_ij[H, K] in the eigenbasis:
-    //   B = sum_(i,k,j) T~_ij F2_ikj (H~_ik K~_kj + K~_ik H~_kj)
-    // and its unsymmetrised second derivative d2B/dH~_pq dK~_rs
-    //   L0_pqrs = d_qr T~_ps F2_pqs + d_ps T~_rq F2_rpq
+    secondDifferences(lambda, F1, F2);
     const mat3 Tt = Q.transpose()*(0.5*(T + T.transpose()))*Q;
-    auto L0 = [&](int p, int q, int r, int s)
-    {
-        double v = 0;
-        if (q == r) v += Tt(p, s)*F2[p][q][s];
-        if (p == s) v += Tt(r, q)*F2[r][p][q];
-        return v;
-    };
-
-    // Symmetric perturbations: 4 sym_(pq) sym_(rs) L0 = sum of the four
-    // index swaps
     tensor4 Lt;
     for (int p = 0; p < 3; ++p)
         for (int q = 0; q < 3; ++q)
             for (int r = 0; r < 3; ++r)
                 for (int s = 0; s < 3; ++s)
-                    Lt(3*p + q, 3*r + s) =
-                        L0(p, q, r, s) + L0(q, p, r, s)
-                      + L0(p, q, s, r) + L0(q, p, s, r);
+                    Lt(3*p + q, 3*r + s) = tlEntry(Tt, F2, p, q, r, s);
 
     return symmetrise(pushForward(Lt, Q));
 }
@@ -320,31 +335,9 @@ mat6 logStrainMap::tangent(const mat6& A, const mat3& T) const
     {
         throw numericalError("logStrainMap: T has non-finite entries");
     }
-    // Second divided differences, as logStrainSecond
     double F2[3][3][3];
-    for (int i = 0; i < 3; ++i)
-    {
-        for (int k = i; k < 3; ++k)
-        {
-            for (int j = k; j < 3; ++j)
-            {
-                const double v = secondDividedDifferenceSorted
-                (
-                    lambda_(i), lambda_(k), lambda_(j), F1_(i, k), F1_(k, j)
-                );
-                F2[i][k][j] = F2[i][j][k] = F2[k][i][j] =
-                F2[k][j][i] = F2[j][i][k] = F2[j][k][i] = v;
-            }
-        }
-    }
+    secondDifferences(lambda_, F1_, F2);
     const mat3 Tt = Q_.transpose()*(0.5*(T + T.transpose()))*Q_;
-    auto L0 = [&](int p, int q, int r, int s)
-    {
-        double v = 0;
-        if (q == r) v += Tt(p, s)*F2[p][q][s];
-        if (p == s) v += Tt(r, q)*F2[r][p][q];
-        return v;
-    };
 
     // Eigenbasis: diag(p) A~ diag(p) + (T : L)~ (the symmetric part of the
     // latter, as logStrainSecond symmetrises)
@@ -358,8 +351,7 @@ mat6 logStrainMap::tangent(const mat6& A, const mat3& T) const
         for (int b = 0; b < 6; ++b)
         {
             const int r = voigtI[b], s = voigtJ[b];
-            L(a, b) = L0(p, q, r, s) + L0(q, p, r, s)
-                    + L0(p, q, s, r) + L0(q, p, s, r);
+            L(a, b) = tlEntry(Tt, F2, p, q, r, s);
         }
     }
     M += 0.5*(L + L.transpose());
