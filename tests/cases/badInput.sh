@@ -125,6 +125,8 @@ tryCase "E given twice" "Entry 'material/E' is given twice in .*solidProperties.
     "sed -i 's/^    E .*/&\n    E           1000;/' $material"
 tryCase "endTime given twice" "Entry 'endTime' is given twice in .*controlDict" \
     "sed -i 's/^endTime .*/&\nendTime 2;/' system/controlDict"
+tryCase "a summary direction in 2D" "Entry 'direction' in .*solidSolution.*either 'component' or a non-zero 'direction' \\(3D solids only\\)" \
+    "foamDictionary -entry summary/tipDisplacementY/direction -add '(0 1 0)' system/solidSolution >/dev/null"
 tryCase "component z in plane strain (summary)" "Unknown component 'z' in .*solidSolution.*tipDisplacementY" \
     "foamDictionary -entry summary/tipDisplacementY/component -set z system/solidSolution >/dev/null"
 tryCase "component z in plane strain (fixedDisplacement)" "Unknown component 'z' in .*0/solid/D.*left" \

@@ -26,6 +26,8 @@ checkClose "rigid motion: corner x" "$(summaryValue "$c" cornerX)" 4 1e-10
 checkClose "rigid motion: corner y" "$(summaryValue "$c" cornerY)" 3 1e-10
 checkClose "rigid motion: corner z" "$(summaryValue "$c" cornerZ)" 4 1e-10
 checkClose "rigid motion: top face extent z" "$(summaryValue "$c" topZMax)" 4 1e-10
+checkClose "rigid motion: corner displacement along (1 1 1) (summary direction)" \
+    "$(summaryValue "$c" cornerDiagonal)" 3.46410161513775 1e-10
 r=$(summaryValue "$c" bottomReactionZ)
 checkBelow "rigid motion: no reaction (|$r| < 1e-9 E)" "$(calc "abs($r)")" 1e-6
 

@@ -39,6 +39,25 @@ void Foam::formScene::readSummary()
         if (type == "displacement" || type == "position")
         {
             keys.append(wordList{"point", "component"});
+            if (type == "displacement") keys.append(word("direction"));
+            // a displacement along a direction (3D), e.g. a draw-in along
+            // a diagonal, or a component
+            if
+            (
+                ed.found("direction")
+             && (
+                    type != "displacement" || ed.found("component")
+                 || !(mag(ed.get<vector>("direction")) > 0)
+                 || solids_[0].analysis() != form::analysisType::solid3D
+                )
+            )
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'direction' in " << ed.name() << ": a"
+                    << " displacement summary takes either 'component' or"
+                    << " a non-zero 'direction' (3D solids only)"
+                    << exit(FatalIOError);
+            }
         }
         else if (type == "reaction")
         {
@@ -433,6 +452,19 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         catch (const form::numericalError&)
         {
             value = std::numeric_limits<scalar>::quiet_NaN();
+        }
+    }
+    else if (type == "displacement" && ed.found("direction"))
+    {
+        // The displacement along a direction (3D), e.g. a draw-in along a
+        // diagonal
+        // (the direction checked when the summary was read)
+        const vector d = ed.get<vector>("direction");
+        const point p = ed.get<point>("point");
+        value = 0;
+        for (label c = 0; c < 3; ++c)
+        {
+            value += s.displacementAt(p, c, ed)*d[c]/mag(d);
         }
     }
     else
