@@ -117,6 +117,11 @@ if (cd "$c" && OMP_NUM_THREADS=1 timeout 1800 ./Allrun > log.Allrun 2>&1) \
     rm -rf "$r/pressureControl"
     tr=$(ls -d "$r"/0.5* | head -1); tr=${tr##*/}
     te=$(ls -d "$r"/0.6* | head -1); te=${te##*/}
+    # The step's exact end time (directory names are rounded to
+    # timePrecision): the restart must stop where the continuous run's
+    # step ended
+    te=$(awk -v t="$te" 'NR > 1 && ($1 - t)^2 < 1e-12 { print $1; exit }' \
+        "$c/postProcessing/history.dat")
     sed -i "s/^startTime .*/startTime       $tr;/; s/^endTime .*/endTime         $te;/" \
         "$r/system/controlDict"
     # (the entries at h = 30 mm are not reached by then)

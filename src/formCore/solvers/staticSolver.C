@@ -668,9 +668,26 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
          && energyRatio <= newton_.energyTolerance
          && rNorm > 0.5*rPrevNorm
          && rNorm <= std::sqrt(newton_.forceTolerance)*ref;
+        // The converse floor: the force criterion holds with a tenfold
+        // margin, |r| no longer decreases, and the energy ratio stalls
+        // between sqrt(energyTol) and energyTol: the update is round-off
+        // (|dU| ~ 1e-16 of the state) against a small energy reference
+        // (a short predicted step, whose reference is the predicted
+        // increment's work: hemming's flanging at 1e-5 steps)
+        const bool energyRoundOff =
+            !converged && !roundOff
+         && i > 1
+         && rNorm <= 0.1*newton_.forceTolerance*ref
+         && rNorm > 0.5*rPrevNorm
+         && energyRatio <= std::sqrt(newton_.energyTolerance);
         if (roundOff)
         {
             log_<< "    force residual at round-off level (energy converged,"
+                   " |r| stagnates): accepted\n";
+        }
+        if (energyRoundOff)
+        {
+            log_<< "    energy at round-off level (force converged tenfold,"
                    " |r| stagnates): accepted\n";
         }
         // Stalled at the force tolerance: the force criterion holds and
@@ -680,7 +697,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         // non-unique multipliers of two-pass contact, where both sides
         // press the same points): the state cannot be improved.
         const bool stalled =
-            !converged && !roundOff
+            !converged && !roundOff && !energyRoundOff
          && i > 1
          && newton_.lineSearch
          && beta <= std::pow(0.5, newton_.maxLineSearchIterations)
@@ -691,7 +708,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             log_<< "    force criterion holds and no line-search step reduces"
                    " |r|: accepted\n";
         }
-        if (converged || roundOff || stalled)
+        if (converged || roundOff || energyRoundOff || stalled)
         {
             model_.setForceLevel(ref);
             return true;
