@@ -311,6 +311,7 @@ contactModel::contactModel
     // Automatic split of the regularised law g f = epsN k = 1e-10 E l^2:
     // the knee of w at a pressure of about 1e-7 E (contactModel.H)
     m.k = controls.stiffness > 0 ? controls.stiffness : 1e-4*modulus*depth;
+    m.modulus = modulus;
     m.epsN =
         controls.epsilonN > 0 ? controls.epsilonN : std::pow(1e-3*spacing, 2);
     // epsT: set at the first increment from the tools' speed (automatic
@@ -348,6 +349,7 @@ void contactModel::setShells(const shellSet* shells)
         impl::pairData& p = m.pairs[i];
         const contactPairSpec& spec = m.pairSpecs[i];
         p.offset.clear();
+        p.compliance.clear();
         if (!shells || m.nDim != 3) continue;
         bool anyShell = false, anySolid = false;
         for (const int n : p.nodes)
@@ -417,6 +419,24 @@ void contactModel::setShells(const shellSet* shells)
         {
             const int node = p.nodes[a];
             p.offset[a] = side[node]*0.5*shells->thickness(node);
+        }
+        // Through-thickness compliance of the contact points: a normal
+        // force f on the node's share A of the face (int N_a dA on the
+        // mid-surface) compresses the half thickness h by h f/(E A)
+        std::map<int, double> area;
+        for (const std::vector<int>& f : p.faces)
+        {
+            matX X(4, 3);
+            for (int b = 0; b < 4; ++b) X.row(b) = m.mesh->X.row(f[b]);
+            const vecX w = faceLoad::deadTraction(X, vec3(1, 0, 0));
+            for (int b = 0; b < 4; ++b) area[f[b]] += w(3*b);
+        }
+        p.compliance.resize(p.nodes.size());
+        for (std::size_t a = 0; a < p.nodes.size(); ++a)
+        {
+            const double A = area[p.nodes[a]];
+            p.compliance[a] =
+                A > 0 ? std::abs(p.offset[a])/(m.modulus*A) : 0.0;
         }
     }
 }
@@ -553,6 +573,40 @@ void contactModel::beginIncrement(double t0, double t1, const vecX& U)
             }
         }
         if (!pressed) m.approach(int(T), t1, U);
+    }
+    m.hardStart(t1, U);
+}
+
+
+// A node that has never carried force (its multiplier exactly zero) but
+// touches its rigid tool at the start of the step (gap within the knee,
+// e.g. a sheet laid on the die with the holder on it) would start at the
+// knee of w, lambda = g = 0, where w_g = w_lambda = 1/2: the first Newton
+// update then sees the contact as a spring of stiffness k (1e-4 E per
+// node), and a holder force of a few kN drives the sheet millimetres
+// through the tools (the square cup stalled there). Started on the hard
+// branch instead, lambda = 10 sqrt(epsN) (w_g = 0.99: a gap held to 1 %,
+// a nodal force of 1e-6 E l), the first update keeps the node on the
+// tool; Newton opens it in the next iteration if it should lift off.
+void contactModel::impl::hardStart(double t1, const vecX& U)
+{
+    const double band = std::sqrt(epsN);
+    for (pairData& p : pairs)
+    {
+        if (p.tool < 0 || !p.active || toolReleased[p.tool]) continue;
+        const vec3 d = translation(p.tool, t1);
+        for (int a = 0; a < int(p.nodes.size()); ++a)
+        {
+            const int il = p.first + p.perNode*a;
+            if (x(il) != 0 || xCommitted(il) != 0) continue;
+            const double gap = nDim == 3
+              ? tools[p.tool].surface->project(contactPoint(p, a, U) - d).gap
+              : tools[p.tool].profile->project
+                (
+                    position(p.nodes[a], U) - d.head<2>()
+                ).gap;
+            if (gap <= band) x(il) = 10*band;
+        }
     }
 }
 

@@ -104,6 +104,27 @@ void contactModel::impl::commit3D(pairData& p, const vecX& U)
 }
 
 
+tangentFrame contactModel::impl::frameOf
+(
+    const pairData& p,
+    int a,
+    const surfaceProjection& P
+) const
+{
+    // The node's reference direction stays fixed over a step (commit3D
+    // renews it when the normal has turned by 65 deg), so that the
+    // friction multipliers keep their frame. Only the closest point of a
+    // node far from the tool can jump that far within a step (a point on
+    // the core of a swept profile has a ring of closest points): its
+    // friction multipliers vanish, and the least aligned axis serves
+    if (std::abs(P.normal.dot(p.ref[a])) > std::cos(10*M_PI/180))
+    {
+        return tangentFrame::of(P, leastAligned(P.normal));
+    }
+    return tangentFrame::of(P, p.ref[a]);
+}
+
+
 void contactModel::impl::evaluateRigid3D
 (
     pairData& p,
@@ -145,7 +166,7 @@ void contactModel::impl::evaluateRigid3D
         q.tool = T;
         if (p.perNode == 3)
         {
-            const tangentFrame F = tangentFrame::of(P, p.ref[a]);
+            const tangentFrame F = frameOf(p, a, P);
             q.t.resize(3, 2);
             q.t << F.t1, F.t2;
             q.dt = {F.dT1DY, F.dT2DY};

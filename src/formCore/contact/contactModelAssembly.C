@@ -134,7 +134,11 @@ void contactModel::impl::assembleNode
     const int il = p.first + p.perNode*a;
     const double lambda = x(il);
     const vecX tau = x.segment(il + 1, nt);
-    const normalConstraint c = normalConstraintFunction(q.gap, lambda, epsN);
+    // A shell's contact point gives way through the half thickness:
+    // g~ = g + c k lambda
+    const double ck = p.compliance.empty() ? 0.0 : p.compliance[a]*k;
+    const double gap = q.gap + ck*lambda;
+    const normalConstraint c = normalConstraintFunction(gap, lambda, epsN);
     // Block b's first row in q
     const auto first = [nc, d](int b) { return b == 0 ? 0 : nc + d*(b - 1); };
     // A force on the contact point as generalised forces on the
@@ -165,7 +169,7 @@ void contactModel::impl::assembleNode
     }
     if (q.tool >= 0) toolForce[q.tool].head(d) += f;
     r(il) = k*c.w;
-    updateStatus(p, a, lambda, q.gap, U, K != nullptr);
+    updateStatus(p, a, lambda, gap, U, K != nullptr);
 
     frictionResult fc;
     if (nt > 0)
@@ -219,7 +223,7 @@ void contactModel::impl::assembleNode
             add(N + il + 1 + al, di, Ktq(al, i));
         }
     }
-    add(N + il, N + il, -k*c.dwdl);
+    add(N + il, N + il, -k*(c.dwdl + c.dwdg*ck));
     for (int al = 0; al < nt; ++al)
     {
         for (int be = 0; be < nt; ++be)
