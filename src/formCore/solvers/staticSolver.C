@@ -549,7 +549,10 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     double rPrevNorm = r0;
     // residual norms of the step's iterates, for a non-monotone search
     std::vector<double> recent{rhs.norm()};
-    for (int i = 1; i <= newton_.maxIterations; ++i)
+    // The iteration limit; a step caught by it inside Newton's quadratic
+    // basin gets a few more iterations (below)
+    int limit = newton_.maxIterations;
+    for (int i = 1; i <= limit; ++i)
     {
         const vecX dU = solveLinear(rhs);
 
@@ -713,6 +716,21 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             model_.setForceLevel(ref);
             return true;
         }
+        // At the limit inside the quadratic basin (a full step that cut
+        // ||r|| a hundredfold, ||r|| within sqrt(forceTol) of the
+        // reference): one more iteration, up to 5 beyond maxIterations,
+        // instead of a cutback that would throw the step's work away
+        if
+        (
+            i == limit && limit < newton_.maxIterations + 5
+         && beta == 1 && rNorm <= 0.01*rPrevNorm
+         && rNorm <= std::sqrt(newton_.forceTolerance)*ref
+        )
+        {
+            ++limit;
+            log_<< "    converging quadratically at the iteration limit:"
+                   " one more iteration\n";
+        }
         rPrevNorm = rNorm;
         if (rNorm > newton_.divergenceFactor*startRef)
         {
@@ -729,6 +747,9 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     (
         "not converged in maxIterations = "
       + std::to_string(newton_.maxIterations)
+      + (limit > newton_.maxIterations
+          ? " (+" + std::to_string(limit - newton_.maxIterations)
+          + " in the quadratic basin)" : std::string())
     );
 }
 
