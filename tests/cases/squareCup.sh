@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The NUMISHEET'93 square cup, reduced (issue 23's CI case; the tutorial
+# is to come): a quarter aluminium blank 75 x 75 x 0.81 (Hill'48), 20 x 20
+# MITC4 shells with 5 points through the thickness, drawn to a punch
+# stroke of 3.9 mm by rigid tools swept around a square core, the blank
+# holder force-controlled (4.9 kN on the quarter) and resting on the
+# blank at zero gap from the first step, Coulomb friction 0.162
+# (tests/cases/squareCup). What it guards is numerical stability in 3D
+# sheet forming: before 2026-11-27 this case stopped in its first step
+# (the zero-gap holder started at the knee of the contact law; the
+# pinched flange had no stiffness across its thickness; a friction frame
+# failed on the tools' core), contactModel.H. Checks:
+#   - the run reaches the stroke; its first step converges without a
+#     cutback and the run takes at most 5 cutbacks (observed 0 and 2);
+#   - the holder carries its force, 4900 within 1e-8 (force control);
+#   - the tools' forces on the blank balance in z (no other load acts
+#     across the symmetry planes) within 1e-6 of the die's force
+#     (observed 1e-15);
+#   - the flange edge draws in, more along the axis of symmetry than
+#     along the diagonal (the square cup's known pattern: the diagonal's
+#     flange is compressed the most);
+#   - Newton converges quadratically at the end of the steps (observed
+#     order, median over the steps, at least 1.8).
+. "$(dirname "$0")/testFunctions"
+work=$(mktemp -d "${TMPDIR:-/tmp}/formFoamSquareCup.XXXXXX")
+c=$work/cup
+if runCopy squareCup "$c" blank && [ -f "$c/postProcessing/summary" ]; then
+    v() { summaryValue "$c" "$1"; }
+    if grep -q "^Step 1 .*(cutback" "$c/log.formFoam"; then
+        fail "square cup: the first step (holder at zero gap) was cut back"
+    else
+        pass "square cup: the first step (holder at zero gap) converges without a cutback"
+    fi
+    checkBelow "square cup: cutbacks over the stroke" "$(v cutbacks)" 5.5
+    checkClose "square cup: the holder carries its force" "$(calc '-f' f="$(v holderForceZ)")" 4900 1e-8
+    checkBelow "square cup: z balance of the tools' forces / die force" \
+        "$(calc 'abs(p + d + h)/abs(d)' p="$(v punchForceZ)" d="$(v dieForceZ)" h="$(v holderForceZ)")" 1e-6
+    checkBetween "square cup: draw-in along the diagonal (mm)" "$(v drawInDiagonal)" 0 "$(v drawInX)"
+    checkBelow "square cup: Newton order (median over the steps) above 1.8" 1.8 "$(newtonOrder "$c/log.formFoam")"
+    echo "    square cup: $(v steps) steps, $(v newtonIterationsPerStep) Newton its/step," \
+         "$(v cutbacks) cutbacks, punch force $(v punchForceZ), draw-in x $(v drawInX)," \
+         "diagonal $(v drawInDiagonal), wall time $(v wallTime) s"
+else
+    fail "square cup run (see $c/log.formFoam)"
+    tail -15 "$c/log.formFoam" 2>/dev/null | sed 's/^/    | /'
+fi
+[ -n "${KEEP:-}" ] && echo "    kept $c" || rm -rf "$work"
