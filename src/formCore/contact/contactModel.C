@@ -423,14 +423,8 @@ void contactModel::setShells(const shellSet* shells)
         // Through-thickness compliance of the contact points: a normal
         // force f on the node's share A of the face (int N_a dA on the
         // mid-surface) compresses the half thickness h by h f/(E A)
-        std::map<int, double> area;
-        for (const std::vector<int>& f : p.faces)
-        {
-            matX X(4, 3);
-            for (int b = 0; b < 4; ++b) X.row(b) = m.mesh->X.row(f[b]);
-            const vecX w = faceLoad::deadTraction(X, vec3(1, 0, 0));
-            for (int b = 0; b < 4; ++b) area[f[b]] += w(3*b);
-        }
+        std::map<int, double> area =
+            m.faceWeights(p, vecX::Zero(m.nDofs));
         p.compliance.resize(p.nodes.size());
         for (std::size_t a = 0; a < p.nodes.size(); ++a)
         {

@@ -14,6 +14,37 @@ namespace form
 {
 
 
+std::map<int, double> contactModel::impl::faceWeights
+(
+    const pairData& p,
+    const vecX& U
+) const
+{
+    std::map<int, double> weight;
+    for (const std::vector<int>& face : p.faces)
+    {
+        const int n = int(face.size());
+        if (nDim == 3)
+        {
+            matX X(n, 3);
+            for (int a = 0; a < n; ++a)
+            {
+                X.row(a) = position3(face[a], U).transpose();
+            }
+            const vecX f = faceLoad::deadTraction(X, vec3(1, 0, 0));
+            for (int a = 0; a < n; ++a) weight[face[a]] += f(3*a);
+            continue;
+        }
+        matX X(n, 2);
+        for (int a = 0; a < n; ++a) X.row(a) = position(face[a], U);
+        const vecX f =
+            edgeLoad::deadTraction(X, Eigen::Vector2d(1, 0), analysis);
+        for (int a = 0; a < n; ++a) weight[face[a]] += f(2*a);
+    }
+    return weight;
+}
+
+
 std::vector<contactNodeResult> contactModel::pairResults
 (
     const std::string& pair,
@@ -33,29 +64,8 @@ std::vector<contactNodeResult> contactModel::pairResults
     }
     const impl::pairData& p = m.pairs[ip];
 
-    // Consistent edge weights int N_a ds (per depth or full ring) on the
-    // current configuration
-    std::map<int, double> weight;
-    for (const std::vector<int>& face : p.faces)
-    {
-        const int n = int(face.size());
-        if (m.nDim == 3)
-        {
-            matX X(n, 3);
-            for (int a = 0; a < n; ++a)
-            {
-                X.row(a) = m.position3(face[a], U).transpose();
-            }
-            const vecX f = faceLoad::deadTraction(X, vec3(1, 0, 0));
-            for (int a = 0; a < n; ++a) weight[face[a]] += f(3*a);
-            continue;
-        }
-        matX X(n, 2);
-        for (int a = 0; a < n; ++a) X.row(a) = m.position(face[a], U);
-        const vecX f =
-            edgeLoad::deadTraction(X, Eigen::Vector2d(1, 0), m.analysis);
-        for (int a = 0; a < n; ++a) weight[face[a]] += f(2*a);
-    }
+    // Consistent weights on the current configuration
+    std::map<int, double> weight = m.faceWeights(p, U);
 
     std::vector<contactNodeResult> results;
     const Eigen::Vector2d d =
