@@ -754,8 +754,13 @@ void Foam::formScene::run()
         );
         solver.setIntegrator(stepDynamic ? integrator_.get() : nullptr);
         // A restart inside this step continues it as the interrupted run
-        // would have: same next step size, same predictor
-        if (restarted_ && ps.name == resumeStep_ && sc.startTime > ps.startTime)
+        // would have: same next step size, same predictor. (The written
+        // state names the process step that was running; a state written
+        // at the end of a step names that step, not the next. The start
+        // time is no test: without a processSchedule the one step "run"
+        // starts at the restart time itself, and the restarted bulge lost
+        // its predictor and step size.)
+        if (restarted_ && ps.name == resumeStep_)
         {
             solver.resume(resume_);
         }
