@@ -637,12 +637,17 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
                 rNorm <= newton_.forceTolerance*ref
              && (nearEquilibrium || energyRatio <= newton_.energyTolerance)
             );
-        // The first iteration meets the force criterion: the energy of
-        // the next update from the factors at hand decides (header)
+        // The force criterion holds, the energy criterion not yet: the
+        // energy of the next update, from the factors at hand, decides
+        // (header). At the first iteration of an unpredicted step (its
+        // energy ratio is 1 by definition) and after a full Newton step
+        // (beta = 1: inside the quadratic basin, where the factors of the
+        // last iterate are those of a close tangent)
         if
         (
-            !converged && i == 1 && !nearEquilibrium && energy1 > 0
-         && !predicted && rNorm <= newton_.forceTolerance*ref
+            !converged && !nearEquilibrium && energy1 > 0
+         && rNorm <= newton_.forceTolerance*ref
+         && (i == 1 ? !predicted : beta == 1)
         )
         {
             const double next = std::abs(solveAgain(r).dot(r))/energy1;
@@ -651,8 +656,8 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
                 std::snprintf
                 (
                     line, sizeof(line),
-                    "    energy of the next update (factors of iteration 1)"
-                    " %.3e <= energyTolerance: converged\n", next
+                    "    energy of the next update (factors of iteration %d)"
+                    " %.3e <= energyTolerance: converged\n", i, next
                 );
                 log_<< line;
                 model_.setForceLevel(ref);

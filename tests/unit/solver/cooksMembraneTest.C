@@ -158,13 +158,16 @@ TEST(cooksMembrane, NeoHookeanLargeDeformationConvergesQuadratically)
         EXPECT_EQ(r.cutbacks, 0);
         EXPECT_LE(r.iterations, 12);
 
-        // The residual norm drops by > 9 orders from its peak (to its
-        // round-off floor ~ eps kappa)
+        // The residual norm drops by > 8 orders from its peak (the force
+        // tolerance 1e-8 of a load level below the peak; the look-ahead
+        // of staticSolver.H accepts an iterate once the force criterion
+        // holds and the next update's energy is negligible, so the last
+        // residual is not the round-off floor ~ eps kappa)
         const double peak = *std::max_element
         (
             r.residualNorms.begin(), r.residualNorms.end()
         );
-        EXPECT_LT(r.residualNorms.back(), 1e-9*peak) << "step " << r.step;
+        EXPECT_LT(r.residualNorms.back(), 1e-8*peak) << "step " << r.step;
 
         // Asymptotic rate in the energy norm |dU.r| (relative to the first
         // update): the last two rates of the quadratic range lie near 2.
