@@ -50,8 +50,12 @@ std::string solidModel::iterationNote(const vecX& residual) const
     {
         const int d = m.numbering.freeDofs[i];
         const int node = m.dofs.node(d);
+        // components: translations x, y (, z), then a shell node's two
+        // rotations (shellSet.H)
+        static const char* names[] = {" x", " y", " z", " rotation 1", " rotation 2"};
+        const int comp = m.dofs.component(d);
         note += "  max at node " + std::to_string(node)
-          + (m.dofs.component(d) ? " y" : " x") + " (";
+          + (comp >= 0 && comp < 5 ? names[comp] : " dof") + " (";
         for (int c = 0; c < m.nDim; ++c)
         {
             char buf[32];
