@@ -191,6 +191,8 @@ tryCase "contact: epsilonN 1e6" "Entry 'epsilonN' in .*contactProperties.*out of
     "foamDictionary -entry epsilonN -set 1e6 $contact >/dev/null"
 tryCase "contact: a word for the tools dictionary" "Entry 'tools' in .*contactProperties.*must be a dictionary" \
     "sed -i '/^tools/,/^}/c\\tools punch;' $contact"
+tryCase "contact: a negative tool compliance" "Entry 'compliance' of tool 'punch' in .*contactProperties.*must be zero \\(rigid\\) or positive.*got -0.001" \
+    "foamDictionary -entry tools/punch/compliance -add -1e-3 $contact >/dev/null"
 tryCase "contact: a pair on the empty front/back patch" "Patch 'frontAndBack' .*is an empty or wedge patch.*cannot carry contact" \
     "sed -i 's/patch top; tool/patch frontAndBack; tool/' $contact"
 tryCase "contact: a tool profile in the reverse order" "Tool 'punch' .*turns its back on patch 'top'" \

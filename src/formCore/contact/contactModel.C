@@ -71,6 +71,18 @@ contactModel::contactModel
                 " are surfaces)"
             );
         }
+        if (!std::isfinite(t.compliance) || t.compliance < 0)
+        {
+            char value[32];
+            std::snprintf(value, sizeof(value), "%g", t.compliance);
+            throw inputError
+            (
+                t.name + "/compliance",
+                "tool '" + t.name + "': compliance out of range: "
+              + std::string(value) + " (valid: 0 (rigid) or a positive"
+                " normal give per unit pressure)"
+            );
+        }
         if (t.forceControlled)
         {
             if (!t.force)
@@ -320,6 +332,7 @@ contactModel::contactModel
 
     m.x = vecX::Zero(nUnknowns);
     m.xCommitted = m.x;
+    for (impl::pairData& p : m.pairs) m.addToolCompliance(p);
 }
 
 
@@ -433,6 +446,8 @@ void contactModel::setShells(const shellSet* shells)
                 A > 0 ? std::abs(p.offset[a])/(m.modulus*A) : 0.0;
         }
     }
+    // (the tools' own compliance, cleared above with the shells')
+    for (impl::pairData& p : m.pairs) m.addToolCompliance(p);
 }
 
 

@@ -45,6 +45,22 @@ std::map<int, double> contactModel::impl::faceWeights
 }
 
 
+void contactModel::impl::addToolCompliance(pairData& p) const
+{
+    if (p.tool < 0 || !(tools[p.tool].compliance > 0)) return;
+    const double c = tools[p.tool].compliance;
+    const std::map<int, double> area = faceWeights(p, vecX::Zero(nDofs));
+    p.compliance.resize(p.nodes.size(), 0.0);
+    for (std::size_t a = 0; a < p.nodes.size(); ++a)
+    {
+        const auto it = area.find(p.nodes[a]);
+        // (a node on the axis of an axisymmetric model has no ring area:
+        // its force is zero, so is its give)
+        if (it != area.end() && it->second > 0) p.compliance[a] += c/it->second;
+    }
+}
+
+
 std::vector<contactNodeResult> contactModel::pairResults
 (
     const std::string& pair,

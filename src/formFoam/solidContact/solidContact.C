@@ -5,6 +5,7 @@ Description
     constant/contactProperties -> form::contactModel (see solidContact.H).
 \*---------------------------------------------------------------------------*/
 #include "solidContact.H"
+#include <cmath>
 #include "dictionaryChecks.H"
 #include "formError.H"
 #include "OSspecific.H"
@@ -43,8 +44,12 @@ form::rigidToolSpec Foam::solidContact::readTool
     (
         td,
         is3D
-      ? wordList{"surface", "motion", "force", "direction"}
-      : wordList{"profile", "radii", "radius", "motion", "force", "direction"}
+      ? wordList{"surface", "motion", "force", "direction", "compliance"}
+      : wordList
+        {
+            "profile", "radii", "radius", "motion", "force", "direction",
+            "compliance"
+        }
     );
     form::rigidToolSpec tool;
     tool.name = name;
@@ -60,6 +65,20 @@ form::rigidToolSpec Foam::solidContact::readTool
         tool.profile = readProfile(td);
     }
     readMotion(tool, td);
+    // The tool's normal give per unit contact pressure (contactModel.H,
+    // "Tool compliance"); absent: rigid
+    if (td.found("compliance"))
+    {
+        tool.compliance = td.get<scalar>("compliance");
+        if (!(tool.compliance >= 0) || !std::isfinite(tool.compliance))
+        {
+            FatalIOErrorInFunction(td)
+                << "Entry 'compliance' of tool '" << name << "' in "
+                << td.name() << " must be zero (rigid) or positive (the"
+                << " tool face's normal give per unit contact pressure),"
+                << " got " << tool.compliance << exit(FatalIOError);
+        }
+    }
     return tool;
 }
 
