@@ -29,7 +29,7 @@ namespace
 //- The entry of component i (0: x or r, 1: y or z) of edge node b in the
 //  edge's own force vector and matrix (2 entries per node, node by node;
 //  the element maps them to its dofs)
-constexpr int at(int b, int i) { return 2*b + i; }
+constexpr int at(int b, int i) { return elementDof(2, b, i); }
 
 void checkEdge(const matX& X, const char* where)
 {

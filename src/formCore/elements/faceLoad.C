@@ -82,7 +82,7 @@ vecX faceLoad::deadTraction(const matX& X, const vec3& t)
         const vec3 Xr = X.transpose()*dN.col(0);
         const vec3 Xs = X.transpose()*dN.col(1);
         const double dA = Xr.cross(Xs).norm()*q.w;
-        for (int a = 0; a < n; ++a) f.segment<3>(3*a) += N(a)*dA*t;
+        for (int a = 0; a < n; ++a) f.segment<3>(elementDof(3, a, 0)) += N(a)*dA*t;
     }
     return f;
 }
@@ -129,7 +129,7 @@ void faceLoad::followerPressure
         const vec3 xr = x.transpose()*dN.col(0);
         const vec3 xs = x.transpose()*dN.col(1);
         const vec3 nda = xr.cross(xs)*q.w;
-        for (int a = 0; a < n; ++a) f.segment<3>(3*a) += -p*N(a)*nda;
+        for (int a = 0; a < n; ++a) f.segment<3>(elementDof(3, a, 0)) += -p*N(a)*nda;
         if (!K) continue;
         const mat3 Wr = skew(xr)*(p*q.w);
         const mat3 Ws = skew(xs)*(p*q.w);
@@ -138,7 +138,7 @@ void faceLoad::followerPressure
             const mat3 Gb = dN(b, 1)*Wr - dN(b, 0)*Ws;
             for (int a = 0; a < n; ++a)
             {
-                K->block<3, 3>(3*a, 3*b) += N(a)*Gb;
+                K->block<3, 3>(elementDof(3, a, 0), elementDof(3, b, 0)) += N(a)*Gb;
             }
         }
     }

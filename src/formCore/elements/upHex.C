@@ -145,15 +145,15 @@ void upHex<NN, NP>::kinematics
             const double gx = pk.dNdx(a, 0);
             const double gy = pk.dNdx(a, 1);
             const double gz = pk.dNdx(a, 2);
-            pk.B(0, 3*a) = gx;
-            pk.B(1, 3*a + 1) = gy;
-            pk.B(2, 3*a + 2) = gz;
-            pk.B(3, 3*a) = gy;
-            pk.B(3, 3*a + 1) = gx;
-            pk.B(4, 3*a + 1) = gz;
-            pk.B(4, 3*a + 2) = gy;
-            pk.B(5, 3*a) = gz;
-            pk.B(5, 3*a + 2) = gx;
+            pk.B(0, elementDof(3, a, 0)) = gx;
+            pk.B(1, elementDof(3, a, 1)) = gy;
+            pk.B(2, elementDof(3, a, 2)) = gz;
+            pk.B(3, elementDof(3, a, 0)) = gy;
+            pk.B(3, elementDof(3, a, 1)) = gx;
+            pk.B(4, elementDof(3, a, 1)) = gz;
+            pk.B(4, elementDof(3, a, 2)) = gy;
+            pk.B(5, elementDof(3, a, 0)) = gz;
+            pk.B(5, elementDof(3, a, 2)) = gx;
         }
     }
 
@@ -230,7 +230,7 @@ bool upHex<NN, NP>::compute
             {
                 for (int b = 0; b < NN; ++b)
                 {
-                    for (int i = 0; i < 3; ++i) Kt(3*a + i, 3*b + i) += kg(a, b);
+                    for (int i = 0; i < 3; ++i) Kt(elementDof(3, a, i), elementDof(3, b, i)) += kg(a, b);
                 }
             }
         }
@@ -265,7 +265,7 @@ matX upHex<NN, NP>::massMatrix(const matX& X) const
         {
             for (int b = 0; b < NN; ++b)
             {
-                for (int i = 0; i < 3; ++i) M(3*a + i, 3*b + i) += mq(a, b);
+                for (int i = 0; i < 3; ++i) M(elementDof(3, a, i), elementDof(3, b, i)) += mq(a, b);
             }
         }
     }
@@ -293,8 +293,8 @@ infSupMatrices upHex<NN, NP>::infSup(const matX& X) const
         {
             for (int i = 0; i < 3; ++i)
             {
-                div(3*a + i) = g.dNdX(a, i);
-                for (int b = 0; b < NN; ++b) s.T(3*a + i, 3*b + i) += t(a, b);
+                div(elementDof(3, a, i)) = g.dNdX(a, i);
+                for (int b = 0; b < NN; ++b) s.T(elementDof(3, a, i), elementDof(3, b, i)) += t(a, b);
             }
         }
         if constexpr (NP > 0)

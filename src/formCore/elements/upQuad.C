@@ -176,11 +176,11 @@ void upQuad<NN, NP>::kinematics
         pk.B.setZero();
         for (int a = 0; a < NN; ++a)
         {
-            pk.B(0, 2*a) = pk.dNdx(a, 0);
-            pk.B(1, 2*a + 1) = pk.dNdx(a, 1);
-            if (axi) pk.B(2, 2*a) = pk.g.N(a)/pk.r;
-            pk.B(3, 2*a) = pk.dNdx(a, 1);
-            pk.B(3, 2*a + 1) = pk.dNdx(a, 0);
+            pk.B(0, elementDof(2, a, 0)) = pk.dNdx(a, 0);
+            pk.B(1, elementDof(2, a, 1)) = pk.dNdx(a, 1);
+            if (axi) pk.B(2, elementDof(2, a, 0)) = pk.g.N(a)/pk.r;
+            pk.B(3, elementDof(2, a, 0)) = pk.dNdx(a, 1);
+            pk.B(3, elementDof(2, a, 1)) = pk.dNdx(a, 0);
         }
     }
 
@@ -259,8 +259,8 @@ bool upQuad<NN, NP>::compute
             {
                 for (int b = 0; b < NN; ++b)
                 {
-                    Kt(2*a, 2*b) += kg(a, b);
-                    Kt(2*a + 1, 2*b + 1) += kg(a, b);
+                    Kt(elementDof(2, a, 0), elementDof(2, b, 0)) += kg(a, b);
+                    Kt(elementDof(2, a, 1), elementDof(2, b, 1)) += kg(a, b);
                 }
             }
             if (axi)
@@ -270,7 +270,7 @@ bool upQuad<NN, NP>::compute
                     tau(2, 2)*Nr*Nr.transpose()*dV;
                 for (int a = 0; a < NN; ++a)
                 {
-                    for (int b = 0; b < NN; ++b) Kt(2*a, 2*b) += kh(a, b);
+                    for (int b = 0; b < NN; ++b) Kt(elementDof(2, a, 0), elementDof(2, b, 0)) += kh(a, b);
                 }
             }
         }

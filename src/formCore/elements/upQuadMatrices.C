@@ -27,8 +27,8 @@ matX upQuad<NN, NP>::massMatrix(const matX& X) const
         {
             for (int b = 0; b < NN; ++b)
             {
-                M(2*a, 2*b) += mq(a, b);
-                M(2*a + 1, 2*b + 1) += mq(a, b);
+                M(elementDof(2, a, 0), elementDof(2, b, 0)) += mq(a, b);
+                M(elementDof(2, a, 1), elementDof(2, b, 1)) += mq(a, b);
             }
         }
     }
@@ -56,13 +56,13 @@ infSupMatrices upQuad<NN, NP>::infSup(const matX& X) const
         Eigen::Matrix<double, 1, nDof> div;
         for (int a = 0; a < NN; ++a)
         {
-            div(2*a) = g.dNdX(a, 0) + (axi ? g.N(a)/g.R : 0.0);
-            div(2*a + 1) = g.dNdX(a, 1);
+            div(elementDof(2, a, 0)) = g.dNdX(a, 0) + (axi ? g.N(a)/g.R : 0.0);
+            div(elementDof(2, a, 1)) = g.dNdX(a, 1);
             for (int b = 0; b < NN; ++b)
             {
-                s.T(2*a, 2*b) += t(a, b)
+                s.T(elementDof(2, a, 0), elementDof(2, b, 0)) += t(a, b)
                   + (axi ? g.N(a)*g.N(b)/(g.R*g.R)*dV : 0.0);
-                s.T(2*a + 1, 2*b + 1) += t(a, b);
+                s.T(elementDof(2, a, 1), elementDof(2, b, 1)) += t(a, b);
             }
         }
         if constexpr (NP > 0)

@@ -96,7 +96,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
             {
                 for (int i = 0; i < nDim; ++i)
                 {
-                    fext(dofs.dof(face.nodes[a], i)) += f(a*nDim + i);
+                    fext(dofs.dof(face.nodes[a], i)) += f(elementDof(nDim, a, i));
                 }
             }
         }
@@ -129,7 +129,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
             {
                 for (int i = 0; i < nDim; ++i)
                 {
-                    fext(dofs.dof(face.nodes[a], i)) += f(a*nDim + i);
+                    fext(dofs.dof(face.nodes[a], i)) += f(elementDof(nDim, a, i));
                 }
             }
             if (!wantTangent) continue;
@@ -149,7 +149,7 @@ void solidModel::impl::assembleExternal(double t, bool wantTangent)
                         {
                             const int la = face.localNodes[a]*nd + i;
                             const int c = code[la + nE*lb];
-                            const double v = K(a*nDim + i, b*nDim + j);
+                            const double v = K(elementDof(nDim, a, i), elementDof(nDim, b, j));
                             if (c >= 0) ff[c] += v;
                             else if (c <= -2) fp[-2 - c] += v;
                         }
