@@ -870,7 +870,7 @@ std::vector<std::pair<int, double>> contactModel::releaseTool
             vec3 f = m.k*m.xCommitted(il)*P.normal;
             if (p.perNode == 3)
             {
-                const tangentFrame F = tangentFrame::of(P, p.ref[a]);
+                const tangentFrame F = m.frameOf(p, int(a), P);
                 f += m.k*(m.xCommitted(il + 1)*F.t1 + m.xCommitted(il + 2)*F.t2);
             }
             for (int i = 0; i < 3; ++i)

@@ -88,8 +88,10 @@ void contactModel::impl::commit3D(pairData& p, const vecX& U)
         }
         if (std::abs(P.normal.dot(p.ref[a])) < std::cos(25*M_PI/180)) continue;
         // The normal turned towards the reference: a new frame, the same
-        // tangential force
-        const tangentFrame F0 = tangentFrame::of(P, p.ref[a]);
+        // tangential force. (The old frame as the assembly built it: with
+        // the normal within 10 deg of the reference, on the least aligned
+        // axis; tangentFrame::of would throw on a normal parallel to it)
+        const tangentFrame F0 = frameOf(p, int(a), P);
         p.ref[a] = leastAligned(P.normal);
         const tangentFrame F1 = tangentFrame::of(P, p.ref[a]);
         if (p.perNode != 3) continue;
