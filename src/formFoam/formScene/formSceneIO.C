@@ -224,14 +224,14 @@ void Foam::formScene::readRunState()
     }
     steps_.startTime = t;
     runTime_.setTime(t, runTime_.timeIndex());
-    // A process step that starts at the restart time starts at the exact
-    // one: without a processSchedule the one step "run" was built from
-    // controlDict's startTime, the rounded directory name (the restarted
-    // bulge stepped from 0.515938 instead of 0.5159375: loads off by 1e-6
-    // of a step, results by 1e-9)
-    for (processStep& ps : schedule_)
+    // Without a processSchedule the one step "run" was built from
+    // controlDict's startTime, the rounded directory name: it starts at
+    // the exact time (the restarted bulge stepped from 0.515938 instead of
+    // 0.5159375: loads off by 1e-6 of a step, results by 1e-9). (The
+    // steps of a processSchedule start where the one before ended.)
+    if (!isFile(runTime_.path()/"constant"/"processSchedule"))
     {
-        if (mag(ps.startTime - t) <= 1e-6*max(mag(t), 1.0)) ps.startTime = t;
+        for (processStep& ps : schedule_) ps.startTime = t;
     }
     totals_.steps = d.get<label>("steps");
     totals_.iterations = d.get<label>("newtonIterations");
