@@ -302,6 +302,7 @@ void contactModel::setState(const std::vector<double>& s)
     // must keep this time: it is the start of the next slip-rate interval
     m.tEvaluated = m.tCommitted;
     m.xiInitialised = true;
+    m.restored = true;
 }
 
 } // namespace form
