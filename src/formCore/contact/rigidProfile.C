@@ -403,16 +403,26 @@ profileProjection rigidProfile::project(const Eigen::Vector2d& y) const
         profileProjection c = projectOnto(pieces_[i], y, inside);
         const double dist = (y - c.point).norm();
 
-        // Feet inside their piece first, then the nearest; first on ties
+        // Feet inside their piece first, then the nearest; on ties a line
+        // or fillet before a sharp vertex or end point (their foot is the
+        // same point, where the piece's normal is the one-sided limit and
+        // its gap signed: a point on the edge of an end point's normal
+        // cone inside the tool, as every point over the core of a swept
+        // profile, has a negative gap), else the first
+        const bool vertex = !pieces_[i].line && pieces_[i].R == 0;
+        const bool tie = std::abs(dist - bestDist) <= 1e-3*tol_;
         const bool better =
             best.piece < 0
          || (inside && !bestInside)
-         || (inside == bestInside && dist < bestDist);
+         || (
+                inside == bestInside
+             && (tie ? best.vertex && !vertex : dist < bestDist)
+            );
         if (better)
         {
             best = c;
             best.piece = static_cast<int>(i);
-            best.vertex = !pieces_[i].line && pieces_[i].R == 0;
+            best.vertex = vertex;
             bestInside = inside;
             bestDist = dist;
         }

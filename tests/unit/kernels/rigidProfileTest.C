@@ -282,6 +282,20 @@ TEST(rigidProfile, endPoints)
     EXPECT_EQ(p.piece, 0);
     EXPECT_NEAR(p.gap, 5, 1e-12);
 
+    // On the edge of the start point's normal cone (the normal line of
+    // the top face through it): the top face and the start point have
+    // the same foot; the face wins, so that a point inside the tool has a
+    // negative gap and no vertex curvature (a swept profile maps a
+    // whole punch face over its core onto this line: rigidSurface.H)
+    for (const double h : {4.0, -0.5})
+    {
+        p = d.project(vec2(100, h));
+        EXPECT_EQ(p.piece, 1) << "y = (100 " << h << ")";
+        EXPECT_NEAR(p.gap, h, 1e-12);
+        expectNear(p.normal, vec2(0, 1), 1e-12, "top face normal at the start");
+        EXPECT_EQ(p.dNormalDY.norm(), 0);
+    }
+
     // Just before the start point: the top face
     p = d.project(vec2(99.5, 4));
     EXPECT_EQ(p.piece, 1);

@@ -179,6 +179,37 @@ TEST(rigidSurface, sweptProfileIsExtrudedAlongSidesAndRevolvedAtCorners)
     const surfaceProjection top = punch->project(o + 1.0*e1 - 0.5*e2 + 0.7*a);
     EXPECT_NEAR(top.gap, 0.7, 1e-12);
     EXPECT_LT((top.normal - a).norm(), 1e-12);
+    // ... and inside the tool under the face: a negative gap, the face's
+    // normal and no curvature (the outline's end point, whose foot is the
+    // same, gave |gap| and a curvature 1/|gap| across the face: Newton
+    // stalled on the square cup's bottom, 2026-11-27)
+    // The same with the outline starting on the core (the face walked
+    // outwards, the tool above it: a punch pressing down, as a case
+    // writes it), where the start point ties with the face
+    const auto upper = rigidSurface::New
+    (
+        "sweptProfile",
+        {{"origin", o}, {"axis", a}, {"xAxis", vec3(1, 1, 0.3)}},
+        {{"coreX", 3.0}, {"coreY", 2.0}},
+        std::make_shared<rigidProfile>
+        (
+            std::vector<Eigen::Vector2d>{{0, 0}, {4, 0}, {4, 10}},
+            std::vector<double>{1.5}
+        )
+    );
+    for (const double h : {0.7, -0.3, -1e-9})
+    {
+        const vec3 yCore = o - 2.0*e1 + 1.5*e2 + h*a;
+        for (const auto* s : {punch.get(), upper.get()})
+        {
+            const double sign = s == punch.get() ? 1 : -1;
+            const surfaceProjection in = s->project(yCore);
+            EXPECT_NEAR(in.gap, sign*h, 1e-12) << "h " << h;
+            EXPECT_LT((in.normal - sign*a).norm(), 1e-12) << "h " << h;
+            EXPECT_EQ(in.dNormalDY.norm(), 0) << "h " << h;
+            checkDerivatives(*s, yCore, "swept profile, over the core");
+        }
+    }
     // A core of zero size is the revolved outline
     const auto point = rigidSurface::New
     (
