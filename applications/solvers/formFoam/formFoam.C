@@ -232,8 +232,11 @@ int main(int argc, char *argv[])
         argList::addBoolOption
         (
             "checkTangent",
-            "after each converged step, compare the fluid block's Newton"
-            " matrix with finite differences of its residuals (dense: all"
+            "check the Newton matrix along every Newton update against"
+            " central differences of the residual (logged per iteration,"
+            " the largest error in the log's end and the summary's"
+            " tangentCheckMax); with a fluid, also compare its block with"
+            " finite differences after each converged step (dense: all"
             " columns up to 3000 fluid unknowns, above only those of its"
             " coupling with the solid)"
         );

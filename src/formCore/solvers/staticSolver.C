@@ -555,6 +555,26 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     for (int i = 1; i <= limit; ++i)
     {
         const vecX dU = solveLinear(rhs);
+        if (newton_.checkTangent)
+        {
+            const tangentCheckResult c = checkTangentAlong(model_, t1, dU);
+            char buf[96];
+            std::snprintf
+            (
+                buf, sizeof(buf), "      tangent check: |dr/dh + K u|/|K u| %.3e",
+                c.relative
+            );
+            log_<< buf
+                << (c.evaluated ? c.where : "  (perturbed state not admissible)")
+                << '\n';
+            ++nChecks_;
+            if (c.evaluated && c.relative >= worstCheck_.relative)
+            {
+                worstCheck_ = c;
+                worstCheckTime_ = t1;
+                worstCheckIteration_ = i;
+            }
+        }
 
         model_.addToFree(dU);
         bool ok = evaluate(t1, r, true);

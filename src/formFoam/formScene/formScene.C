@@ -734,6 +734,7 @@ void Foam::formScene::run()
         // sheet's stiff membrane modes, cuts Newton's steps to 1/8-1/16;
         // README of the U-channel, "Convergence")
         form::newtonControls nc = newton_;
+        nc.checkTangent = checkTangent_;
         if (lineSearchType_ == "auto")
         {
             nc.residualLineSearch =
@@ -854,6 +855,7 @@ void Foam::formScene::run()
                 }
             );
             totals_.iterations += solver.totalIterations();
+            collectTangentChecks(solver);
             current = nullptr;
             if (schedule_.size() > 1)
             {
@@ -886,6 +888,8 @@ void Foam::formScene::run()
         }
         catch (const form::numericalError& err)
         {
+            collectTangentChecks(solver);
+            reportTangentChecks();
             model.revert();
             // The start time directory holds the case's input: never
             // overwrite it
@@ -911,6 +915,7 @@ void Foam::formScene::run()
     );
 
     if (contact_) contact_->reportUntouched();
+    reportTangentChecks();
     const form::phaseTimes& t = model.times();
     Info<< nl << "Time per phase (s)" << nl
         << "    assembly        " << t.assembly << nl

@@ -1,7 +1,8 @@
 /*---------------------------------------------------------------------------*\
   formFoam: implicit finite-element forming with fluid-structure interaction
 -------------------------------------------------------------------------------
-    formScene: output and restart (formScene.H, "Output and restarts")
+    formScene: output and restart (formScene.H, "Output and restarts");
+    the report of formFoam -checkTangent's checks along the Newton updates
 
     A time directory appears complete or not at all: every region writes
     under .<time>.writing, every file is checked (not empty, ending with
@@ -445,3 +446,31 @@ void Foam::formScene::writeTime
 }
 
 
+void Foam::formScene::collectTangentChecks(const form::staticSolver& solver)
+{
+    if (!checkTangent_) return;
+    tangentChecks_ += solver.tangentChecks();
+    const form::tangentCheckResult& w = solver.worstTangentCheck();
+    if (solver.tangentChecks() && w.relative >= worstTangent_.relative)
+    {
+        worstTangent_ = w;
+        worstTangentTime_ = solver.worstTangentCheckTime();
+        worstTangentIteration_ = solver.worstTangentCheckIteration();
+    }
+}
+
+
+void Foam::formScene::reportTangentChecks() const
+{
+    if (!checkTangent_) return;
+    Info<< nl << "Tangent check (-checkTangent): " << tangentChecks_
+        << " Newton updates checked";
+    if (tangentChecks_)
+    {
+        Info<< "; largest |dr/dh + K u|/|K u| = " << worstTangent_.relative
+            << " at t = " << worstTangentTime_ << ", iteration "
+            << worstTangentIteration_ << nl << "    error vector:"
+            << worstTangent_.where.c_str();
+    }
+    Info<< endl;
+}

@@ -768,6 +768,11 @@ void Foam::formScene::writeSummary
         );
         os.writeEntry("maxIterationsInAStep", maxStepIterations_);
         os.writeEntry("cutbacks", cutbacks);
+        if (checkTangent_)
+        {
+            os.writeEntry("tangentChecks", tangentChecks_);
+            os.writeEntry("tangentCheckMax", worstTangent_.relative);
+        }
         for (const auto& sw : stepWallTimes_)
         {
             os.writeEntry(word(sw.first + "WallTime"), sw.second);

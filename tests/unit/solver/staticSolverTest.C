@@ -165,6 +165,44 @@ TEST(staticSolver, NewtonConvergesQuadratically)
 }
 
 
+TEST(staticSolver, TangentCheckAlongTheUpdatesFindsAWrongTangent)
+{
+    // The arch of the test above with newtonControls::checkTangent
+    // (formFoam -checkTangent): every update is checked by central
+    // differences of the residual. With the exact tangent the relative
+    // error is at round-off and truncation level; with the tangent 5 %
+    // too stiff it is 0.05/1.05 along every update, and the log says so
+    for (const double scale : {1.0, 1.05})
+    {
+        auto law = barLaw(true, 100);
+        std::static_pointer_cast<trussMaterial>(law)->tangentScale = scale;
+        solidModel model = vonMisesTruss(0.5, 3.0, law);
+        auto solver = linearSolver::New("cholmod");
+        newtonControls nc;
+        nc.lineSearch = false;
+        nc.checkTangent = true;
+        stepControls sc;
+        sc.deltaT = 0.5;
+        std::ostringstream log;
+        staticSolver s(model, *solver, nc, sc, log);
+        s.run(nullptr);
+        EXPECT_EQ(s.tangentChecks(), s.totalIterations()) << log.str();
+        EXPECT_NE(log.str().find("tangent check: |dr/dh + K u|/|K u|"), std::string::npos);
+        if (scale == 1)
+        {
+            EXPECT_LT(s.worstTangentCheck().relative, 1e-7) << log.str();
+        }
+        else
+        {
+            EXPECT_NEAR(s.worstTangentCheck().relative, 0.05/1.05, 1e-4) << log.str();
+        }
+        std::cout << "tangent scale " << scale << ": largest error "
+            << s.worstTangentCheck().relative << " over "
+            << s.tangentChecks() << " updates\n";
+    }
+}
+
+
 TEST(staticSolver, ConsistentPredictorSolvesLinearProblemInOneUpdate)
 {
     // Two collinear linear bars, end pulled by prescribed u = 0.1 t: the
