@@ -27,19 +27,27 @@ tangentCheckResult checkTangentAlong
         1e-5*std::max(1.0, model.U().lpNorm<Eigen::Infinity>());
 
     vecX rp(dU.size()), rm(dU.size()), r(dU.size());
-    bool ok = true;
-    try
+    // The error of the central difference with step H along u
+    const auto errorAt = [&](double H, vecX& err) -> bool
     {
-        model.addToFree(h*u);
-        ok = model.evaluate(t, rp, false);
-        model.addToFree(-2*h*u);
-        ok = model.evaluate(t, rm, false) && ok;
-    }
-    catch (const numericalError&)
-    {
-        ok = false;
-    }
-    model.addToFree(h*u);
+        bool ok = true;
+        try
+        {
+            model.addToFree(H*u);
+            ok = model.evaluate(t, rp, false);
+            model.addToFree(-2*H*u);
+            ok = model.evaluate(t, rm, false) && ok;
+        }
+        catch (const numericalError&)
+        {
+            ok = false;
+        }
+        model.addToFree(H*u);
+        err = (rp - rm)/(2*H) + Ku;
+        return ok;
+    };
+    vecX err1, err2;
+    const bool ok = errorAt(h, err1) && errorAt(0.1*h, err2);
     // Back to U, with the tangent the caller had
     model.evaluate(t, r, true);
     if (!ok)
@@ -47,10 +55,12 @@ tangentCheckResult checkTangentAlong
         res.evaluated = false;
         return res;
     }
-    const vecX err = (rp - rm)/(2*h) + Ku;
     res.scale = Ku.norm();
-    res.relative = res.scale > 0 ? err.norm()/res.scale : err.norm();
-    res.where = model.iterationNote(err);
+    const double s = res.scale > 0 ? res.scale : 1.0;
+    res.relativeH = err1.norm()/s;
+    res.relativeH10 = err2.norm()/s;
+    res.relative = std::min(res.relativeH, res.relativeH10);
+    res.where = model.iterationNote(res.relativeH <= res.relativeH10 ? err1 : err2);
     return res;
 }
 

@@ -558,11 +558,12 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         if (newton_.checkTangent)
         {
             const tangentCheckResult c = checkTangentAlong(model_, t1, dU);
-            char buf[96];
+            char buf[128];
             std::snprintf
             (
-                buf, sizeof(buf), "      tangent check: |dr/dh + K u|/|K u| %.3e",
-                c.relative
+                buf, sizeof(buf),
+                "      tangent check: |dr/dh + K u|/|K u| %.3e (h %.2e, h/10 %.2e)",
+                c.relative, c.relativeH, c.relativeH10
             );
             log_<< buf
                 << (c.evaluated ? c.where : "  (perturbed state not admissible)")

@@ -3,8 +3,9 @@
 // set is stick (s = 0) inside the disc |tau| < mu lambda and slip
 // (tau = -mu lambda s/|s|) outside; along any fixed direction it is the
 // scalar law; its derivatives match central differences at stick, slip,
-// both sides of the cone's edge, around x = 0 and at the knee
-// lambda -> 0, and out of contact v = tau.
+// both sides of the cone's edge, around x = 0, at the knee lambda -> 0
+// and at the negative multipliers of opening iterates, and out of contact
+// v = tau.
 #include "constraintFunctions.H"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -83,6 +84,15 @@ TEST(frictionVector, derivativesMatchFiniteDifferences)
         samples.push_back({sFor(3*w*vec2(u(gen), u(gen))), tau, l});
         samples.push_back({3*w*vec2(u(gen), u(gen))/r, 3*w*vec2(u(gen), u(gen)),
                            w*std::abs(u(gen))/mu});
+        // A negative multiplier: the iterate of a node that is opening
+        // (Newton overshoots lambda below 0; the solution never has it);
+        // m = mu lambda < 0 and x on either side of |m| (the derivatives
+        // were taken for m >= 0 only before 2026-11-27, found by formFoam
+        // -checkTangent on the square cup)
+        samples.push_back({sFor(0.3*mk*e), tau, -l});
+        samples.push_back({sFor((2 + u(gen))*mk*e), tau, -l});
+        samples.push_back({sFor((mk + 3*w*u(gen))*e), tau, -l});
+        samples.push_back({sFor(3*w*vec2(u(gen), u(gen))), tau, -w*std::abs(u(gen))/mu});
     }
     for (const sample& p : samples)
     {
