@@ -7,6 +7,7 @@
 #include "newtonTangentCheck.H"
 #include "formError.H"
 #include <algorithm>
+#include <cstdio>
 
 namespace form
 {
@@ -47,7 +48,62 @@ tangentCheckResult checkTangentAlong
         return ok;
     };
     vecX err1, err2;
-    const bool ok = errorAt(h, err1) && errorAt(0.1*h, err2);
+    bool ok = errorAt(h, err1) && errorAt(0.1*h, err2);
+    res.scale = Ku.norm();
+    const double s = res.scale > 0 ? res.scale : 1.0;
+    res.relativeH = ok ? err1.norm()/s : 0;
+    res.relativeH10 = ok ? err2.norm()/s : 0;
+    if (ok && std::min(res.relativeH, res.relativeH10) >= detailThreshold)
+    {
+        // The row of the largest error: its entries K_ij against central
+        // differences over the columns where K's row has entries (a
+        // missing term inside the pattern shows; one outside it shows as
+        // a row error without a column)
+        int i;
+        (res.relativeH <= res.relativeH10 ? err1 : err2).cwiseAbs().maxCoeff(&i);
+        const sparseMatrix Kt = model.K().transpose();
+        struct column { int j; double k, fd; };
+        std::vector<column> cols;
+        for (sparseMatrix::InnerIterator it(Kt, i); it && ok; ++it)
+        {
+            const int j = int(it.row());
+            const double H = h*0.1;
+            vecX e = vecX::Zero(dU.size());
+            e(j) = H;
+            try
+            {
+                model.addToFree(e);
+                ok = model.evaluate(t, rp, false);
+                model.addToFree(-2*e);
+                ok = model.evaluate(t, rm, false) && ok;
+            }
+            catch (const numericalError&)
+            {
+                ok = false;
+            }
+            model.addToFree(e);
+            cols.push_back({j, it.value(), -(rp(i) - rm(i))/(2*H)});
+        }
+        std::sort
+        (
+            cols.begin(), cols.end(),
+            [](const column& a, const column& b)
+            {
+                return std::abs(a.k - a.fd) > std::abs(b.k - b.fd);
+            }
+        );
+        res.detail = "row" + model.iterationNote(vecX::Unit(dU.size(), i));
+        for (std::size_t c = 0; c < std::min<std::size_t>(4, cols.size()); ++c)
+        {
+            char buf[96];
+            std::snprintf
+            (
+                buf, sizeof(buf), "\n          K %.6e  central difference %.6e  column",
+                cols[c].k, cols[c].fd
+            );
+            res.detail += buf + model.iterationNote(vecX::Unit(dU.size(), cols[c].j));
+        }
+    }
     // Back to U, with the tangent the caller had
     model.evaluate(t, r, true);
     if (!ok)
@@ -55,10 +111,6 @@ tangentCheckResult checkTangentAlong
         res.evaluated = false;
         return res;
     }
-    res.scale = Ku.norm();
-    const double s = res.scale > 0 ? res.scale : 1.0;
-    res.relativeH = err1.norm()/s;
-    res.relativeH10 = err2.norm()/s;
     res.relative = std::min(res.relativeH, res.relativeH10);
     res.where = model.iterationNote(res.relativeH <= res.relativeH10 ? err1 : err2);
     return res;

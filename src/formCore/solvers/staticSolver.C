@@ -568,6 +568,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             log_<< buf
                 << (c.evaluated ? c.where : "  (perturbed state not admissible)")
                 << '\n';
+            if (!c.detail.empty()) log_<< "        " << c.detail << '\n';
             ++nChecks_;
             if (c.evaluated && c.relative >= worstCheck_.relative)
             {
