@@ -197,8 +197,8 @@ void form::vtkWriter::write
     scalarArray("p", [](const elementResult& r) { return r.pressure; });
     scalarArray("epsilonEq",
         [](const elementResult& r) { return r.equivalentStrain; });
-    // Shells: the current thickness (the section's times the smallest
-    // thickness stretch of the element's points)
+    // Shells: the current thickness (the section's times the mean thickness
+    // stretch over the element's points: through the thickness and over it)
     bool shells = false;
     for (const auto& b : mesh.blocks) shells = shells || b.shell.thickness > 0;
     if (shells)
@@ -210,10 +210,16 @@ void form::vtkWriter::write
         {
             for (int e = 0; e < b.nElements(); ++e, ++k)
             {
-                os << b.shell.thickness*results[k].thicknessStretch << '\n';
+                os << b.shell.thickness*results[k].meanThicknessStretch << '\n';
             }
         }
         os << "</DataArray>\n";
+        // The mid-surface's principal logarithmic strains (the forming
+        // limit diagram's axes, surfaceStrain.H)
+        scalarArray("majorStrain",
+            [](const elementResult& r) { return r.majorStrain; });
+        scalarArray("minorStrain",
+            [](const elementResult& r) { return r.minorStrain; });
         // The stress at the bottom, middle and top points (elementResult)
         const char* layer[3] = {"sigmaBottom", "sigmaMiddle", "sigmaTop"};
         for (int l = 0; l < 3; ++l)

@@ -8,6 +8,7 @@ Description
     states.
 \*---------------------------------------------------------------------------*/
 #include "shellSet.H"
+#include "surfaceStrain.H"
 #include "quadShape.H"
 #include "planeStressMaterial.H"
 #include <algorithm>
@@ -162,6 +163,22 @@ elementResult shellSet::result
         r.meanThicknessStretch += (o.thicknessStretch - 1)/nq;
     }
     r.pressure = -r.cauchy.trace()/3;
+    // The mid-surface's principal strains, from the corners' reference
+    // and current positions
+    const int npe = npe_[block];
+    matX X0(npe, 3), x(npe, 3);
+    for (int k = 0; k < npe; ++k)
+    {
+        const vec3 Xk = npe == 3
+          ? tris_[block][element].referencePoint(k)
+          : quads_[block][element].referencePoint(k);
+        X0.row(k) = Xk.transpose();
+        x.row(k) = (Xk + dofs.vector3(U, connectivity_[block][npe*element + k]))
+            .transpose();
+    }
+    const surfaceStrain ss = surfaceStrains(X0, x);
+    r.majorStrain = ss.major;
+    r.minorStrain = ss.minor;
     return r;
 }
 

@@ -142,6 +142,26 @@ void Foam::formScene::readSummary()
         {
             keys.append(word("point"));
         }
+        else if (type == "surfaceStrain")
+        {
+            keys.append(wordList{"quantity", "extreme"});
+            const word q = ed.get<word>("quantity");
+            const word x = ed.getOrDefault<word>("extreme", "max");
+            if (!wordList{"major", "minor"}.found(q))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'quantity' in " << ed.name() << ": unknown '"
+                    << q << "'; valid: major minor" << exit(FatalIOError);
+            }
+            if (!wordList{"max", "min"}.found(x))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'extreme' in " << ed.name() << ": unknown '"
+                    << x << "'; valid: max min" << exit(FatalIOError);
+            }
+        }
+        else if (type == "formingLimitMargin")
+        {}
         else if (type == "shellThickness")
         {
             keys.append(word("extreme"));
@@ -206,6 +226,7 @@ void Foam::formScene::readSummary()
                 << nl << "    Valid types: displacement position reaction"
                 << " circleRadius rotation bendingRadius extent difference"
                 << " uChannelSpringback shellThickness directorRotation"
+                << " surfaceStrain formingLimitMargin"
                 << (contact_ ? " toolForce toolPosition" : "")
                 << (
                        !fluid_ ? ""
@@ -232,7 +253,7 @@ void Foam::formScene::readSummary()
                 << " solid region '" << solids_[0].name() << "' is 3D" << nl
                 << "    Valid in 3D: displacement position reaction extent"
                 << " difference uChannelSpringback shellThickness"
-                << " directorRotation"
+                << " directorRotation surfaceStrain formingLimitMargin"
                 << (contact_ ? " toolForce toolPosition" : "")
                 << exit(FatalIOError);
         }
@@ -283,7 +304,8 @@ void Foam::formScene::readSummary()
         {
             "displacement", "position", "reaction", "circleRadius",
             "rotation", "bendingRadius", "extent", "uChannelSpringback",
-            "shellThickness", "directorRotation"
+            "shellThickness", "directorRotation", "surfaceStrain",
+            "formingLimitMargin"
         };
         if (solids_.empty() && solidTypes.found(type))
         {
@@ -383,6 +405,18 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
         (
             ed.getOrDefault<word>("extreme", "min") == "max", ed
         );
+    }
+    else if (type == "surfaceStrain")
+    {
+        value = s.surfaceStrain
+        (
+            ed.get<word>("quantity") == "major",
+            ed.getOrDefault<word>("extreme", "max") == "max", ed
+        );
+    }
+    else if (type == "formingLimitMargin")
+    {
+        value = s.formingLimitMargin(ed);
     }
     else if (type == "bendingRadius")
     {

@@ -172,7 +172,7 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
         properties_,
         {
             "analysisType", "elementType", "material", "bodyForce", "shell",
-            "pointLoads", "pin"
+            "pointLoads", "pin", "formingLimit"
         }
     );
     const word analysisName = properties_.get<word>("analysisType");
@@ -308,6 +308,7 @@ Foam::solidRegion::solidRegion(Time& runTime, const word& name)
     }
     readBoundaryConditions();
     readPointLoads();
+    readFormingLimit();
     model_->finalise();
     if (properties_.found("pin"))
     {

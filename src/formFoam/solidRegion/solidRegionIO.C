@@ -184,9 +184,10 @@ bool Foam::solidRegion::write()
         }
     }
 
-    // Shells: the current thickness, the stresses at the bottom, middle
-    // and top points through it, and the director frames for restarts
-    autoPtr<volScalarField> thickness;
+    // Shells: the current thickness, the mid-surface's principal strains,
+    // the stresses at the bottom, middle and top points through it, and
+    // the director frames for restarts
+    autoPtr<volScalarField> thickness, majorStrain, minorStrain, margin;
     PtrList<volSymmTensorField> layers;
     if (shells)
     {
@@ -219,10 +220,43 @@ bool Foam::solidRegion::write()
                 io("thickness"), *mesh_, dimensionedScalar(dimLength, Zero)
             )
         );
+        majorStrain.reset
+        (
+            new volScalarField
+            (
+                io("majorStrain"), *mesh_, dimensionedScalar(dimless, Zero)
+            )
+        );
+        minorStrain.reset
+        (
+            new volScalarField
+            (
+                io("minorStrain"), *mesh_, dimensionedScalar(dimless, Zero)
+            )
+        );
         forAll(C, celli)
         {
             (*thickness)[celli] =
-                blk.shell.thickness*results[celli].thicknessStretch;
+                blk.shell.thickness*results[celli].meanThicknessStretch;
+            (*majorStrain)[celli] = results[celli].majorStrain;
+            (*minorStrain)[celli] = results[celli].minorStrain;
+        }
+        if (formingLimit_)
+        {
+            margin.reset
+            (
+                new volScalarField
+                (
+                    io("formingLimitMargin"), *mesh_,
+                    dimensionedScalar(dimless, Zero)
+                )
+            );
+            forAll(C, celli)
+            {
+                (*margin)[celli] =
+                    (*formingLimit_)(results[celli].minorStrain)
+                  - results[celli].majorStrain;
+            }
         }
     }
 
@@ -230,6 +264,8 @@ bool Foam::solidRegion::write()
     // precision (a restart reproduces the run to round-off)
     bool ok = pointD.write();
     if (thickness) ok = thickness->write() && ok;
+    if (majorStrain) ok = majorStrain->write() && minorStrain->write() && ok;
+    if (margin) ok = margin->write() && ok;
     for (const volSymmTensorField& f : layers) ok = f.write() && ok;
     ok = D.write() && ok;
     ok = sigma.write() && ok;
@@ -439,38 +475,6 @@ bool Foam::solidRegion::readState(const word& timeName)
 
 
 // ************************************************************************* //
-
-
-Foam::scalar Foam::solidRegion::shellThickness
-(
-    bool largest,
-    const dictionary& dict
-) const
-{
-    const form::feMesh& fe = feMesh_->feMesh();
-    const std::vector<form::elementResult> results = model_->elementResults();
-    scalar value = largest ? -GREAT : GREAT;
-    bool any = false;
-    std::size_t k = 0;
-    for (const form::elementBlock& b : fe.blocks)
-    {
-        for (int e = 0; e < b.nElements(); ++e, ++k)
-        {
-            if (!form::shellSet::isShellType(b.elementType)) continue;
-            const scalar t = b.shell.thickness*results[k].thicknessStretch;
-            value = largest ? max(value, t) : min(value, t);
-            any = true;
-        }
-    }
-    if (!any)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'type' in " << dict.name() << ": solid region '"
-            << name_ << "' has no shell elements (elementType "
-            << elementType_ << ")" << exit(FatalIOError);
-    }
-    return value;
-}
 
 
 Foam::scalar Foam::solidRegion::directorRotation

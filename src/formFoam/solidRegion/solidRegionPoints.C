@@ -3,7 +3,8 @@
 -------------------------------------------------------------------------------
 Description
     solidRegion (solidRegion.H): inputs at single nodes, located by a
-    point of the polyMesh space (shells: a node of the mid-surface):
+    point of the polyMesh space (shells: a node of the mid-surface, or a
+    point on its initial director within the sheet, e.g. of a face):
     point forces and moments (solidProperties pointLoads), components
     held at a node (solidProperties pin, and the pin of process steps).
 \*---------------------------------------------------------------------------*/
@@ -35,12 +36,39 @@ Foam::label Foam::solidRegion::nodeAt
     }
     const double size =
         (fe.X.colwise().maxCoeff() - fe.X.colwise().minCoeff()).norm();
+    const form::shellSet* shells = model_->shells();
+    if (nearest >= 0 && std::sqrt(d2) > 1e-6*size && shells)
+    {
+        // Shells: any point of a mid-surface node's initial director line
+        // within the sheet (e.g. a point of the mesh's top or bottom
+        // face) names that node
+        for (int n = 0; n < fe.nNodes(); ++n)
+        {
+            if (shells->shellNode(n) < 0) continue;
+            const form::vec3 V = shells->initialDirector(n);
+            const form::vec3 d = x - fe.X.row(n).transpose();
+            const double along = d.dot(V);
+            if
+            (
+                std::abs(along) <= 0.5*shells->thickness(n)*(1 + 1e-9)
+             && (d - along*V).norm() <= 1e-6*size
+            )
+            {
+                return n;
+            }
+        }
+    }
     if (nearest < 0 || std::sqrt(d2) > 1e-6*size)
     {
         FatalIOErrorInFunction(dict)
             << "Point " << pt << " in " << dict.name() << " is not a node"
             << " of solid region '" << name_ << "'"
-            << (model_->shells() ? " (shells: a node of the mid-surface)" : "")
+            << (
+                   shells
+                 ? " (shells: a node of the mid-surface, or a point on its"
+                   " director through the sheet)"
+                 : ""
+               )
             << "; the nearest node is at distance " << std::sqrt(d2)
             << exit(FatalIOError);
     }
