@@ -203,6 +203,21 @@ newBase flatPunchDeformable block
 tryCase "two unconnected bodies, one free (no contact declared)" "is not supported: its piece [12] of 2 .*elements around.*pieces share no node.*translation in y" \
     "rm constant/contactProperties; sed -i '/^    punchTop/,/^    }/c\\    punchTop { type free; }' 0/block/D"
 
+# Sheet results (the square cup of squareCup.sh, MITC4 shells): the
+# forming limit curve and the summary types of surfaceStrain.H
+newBase squareCup blank
+props=constant/blank/solidProperties
+tryCase "sheet: a forming limit of unknown type" "Entry 'formingLimit/type' in .*solidProperties.*unknown 'keeler'.*table keelerBrazier" \
+    "printf 'formingLimit { type keeler; }\n' >> $props"
+tryCase "sheet: forming limit points not increasing in minor strain" "Entry 'formingLimit/points' in .*solidProperties.*increase strictly" \
+    "printf 'formingLimit { type table; points ((0 0.3) (-0.1 0.4)); }\n' >> $props"
+tryCase "sheet: a word where the forming limit dictionary belongs" "Entry 'formingLimit' in .*solidProperties.*must be a dictionary" \
+    "printf 'formingLimit keelerBrazier;\n' >> $props"
+tryCase "sheet: a forming limit margin without a forming limit curve" "summary.margin.*a forming limit margin needs a forming limit curve: give formingLimit in constant/blank/solidProperties" \
+    "sed -i 's/^summary$/summary\n{ margin { type formingLimitMargin; } }\nsummaryOld/' system/solidSolution; sed -i '/^summaryOld/,/^}/d' system/solidSolution"
+tryCase "sheet: a surface strain of unknown quantity" "Entry 'quantity' in .*solidSolution.*unknown 'thickness'; valid: major minor" \
+    "sed -i 's/^summary$/summary\n{ e { type surfaceStrain; quantity thickness; } }\nsummaryOld/' system/solidSolution; sed -i '/^summaryOld/,/^}/d' system/solidSolution"
+
 # Fluid: oil withdrawn beyond the cavity's volume (the piston, hydrostatic)
 newBase piston plug
 tryCase "fluid: more oil withdrawn than the cavity holds" "Entry 'injectedVolume' in .*constant/oil/fluidProperties.*withdraws all the fluid of cavity 'oil'" \
