@@ -72,10 +72,15 @@ void Foam::solidRegion::readFormingLimit()
                     << " exponent n (given, or the material's Swift"
                     << " hardening's)" << exit(FatalIOError);
             }
-            const scalar t = d.getOrDefault<scalar>
-            (
-                "thickness", readShellSection().thickness
-            );
+            // The section's thickness, or the mesh's (the sheet's at its
+            // first shell node) where the section gives none
+            scalar tSheet = readShellSection().thickness;
+            const form::shellSet* shells = model_->shells();
+            for (int n = 0; !(tSheet > 0) && shells && n < feMesh_->feMesh().nNodes(); ++n)
+            {
+                if (shells->shellNode(n) >= 0) tSheet = shells->thickness(n);
+            }
+            const scalar t = d.getOrDefault<scalar>("thickness", tSheet);
             formingLimit_.reset
             (
                 new form::formingLimit(form::formingLimit::keelerBrazier(t, n))

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# The NUMISHEET'93 square cup tutorial (tutorials/numisheet93SquareCup:
+# the aluminium quarter cup, 30 x 30 MITC4, drawn 40 mm, tools released,
+# springback), run as it ships with its Allrun. Checks:
+#  - against the converged reference (tests/cases/numisheet93SquareCup.
+#    reference: the same case on the next finer mesh, 45 x 45, with
+#    provenance): draw-ins along x, y and the diagonal at 15 and 40 mm
+#    within 2 % (the convergence criterion), punch force within 1 %,
+#    extreme surface strains within 2 %;
+#  - force control: the holder carries 19.6 kN (1e-9);
+#  - the square cup's pattern: draw-in along the axes > along the
+#    diagonal; x and y alike (r0 = 0.71 ~ r90 = 0.70: 1 %);
+#  - plastic incompressibility, between two independent outputs: the
+#    surface strains (from the nodes' positions) and the thickness (the
+#    plane-stress condition at the points through it) of each element at
+#    the end of forming satisfy eps1 + eps2 + ln(t/t0) ~ 0 (mean over the
+#    elements below 5e-3, largest below 0.03; observed 2e-3 and 0.016:
+#    elastic volume change, centre against mean);
+#  - springback is computed: at t = 2 the released punch carries no
+#    force (the wall-time ratio springback / forming is reported, not
+#    asserted);
+#  - the plots exist (punchForce.png, formingLimit.png, thickness.png).
+. "$(dirname "$0")/testFunctions"
+here=$(cd "$(dirname "$0")" && pwd)
+c=$(caseCopy numisheet93SquareCup)
+summary() { summaryValue "$c" "$1"; }
+
+if (cd "$c" && timeout 1800 ./Allrun > log.Allrun 2>&1) && [ -f "$c/postProcessing/summary" ]; then
+    [ -f "$here/numisheet93SquareCup.reference" ] \
+        || fail "numisheet93SquareCup.reference missing: its checks cannot run"
+    while read -r name value tol; do
+        case $name in ''|'#'*) continue ;; esac
+        checkClose "square cup $name vs the 45 x 45 mesh" "$(summary "$name")" "$value" "$tol"
+    done < "$here/numisheet93SquareCup.reference"
+    checkClose "square cup: the holder carries 19.6 kN" "$(summary holderForce)" 19600 1e-9
+    checkBetween "square cup: draw-in along the diagonal below that along x at 40 mm" \
+        "$(summary drawInDiagonal40)" 0 "$(summary drawInX40)"
+    checkClose "square cup: draw-in along y as along x (r0 ~ r90)" "$(summary drawInY40)" "$(summary drawInX40)" 0.01
+    values()
+    {
+        awk '/^internalField/ { f = 1; next } f == 1 && /^[0-9]+$/ { next }
+             f == 1 && /^\($/ { f = 2; next } f == 2 && /^\)/ { exit } f == 2 { print }' "$1"
+    }
+    t0=$(foamDictionary -entry thickness -value "$c/constant/caseParameters")
+    read -r vmean vmax < <(paste <(values "$c/1/blank/majorStrain") <(values "$c/1/blank/minorStrain") \
+        <(values "$c/1/blank/thickness") | awk -v t0="$t0" \
+        'NF == 3 { s = $1 + $2 + log($3/t0); if (s < 0) s = -s; if (s > m) m = s; t += s; n++ }
+         END { if (n) printf "%.4g %.4g\n", t/n, m }')
+    checkBelow "square cup: plastic incompressibility, mean |eps1 + eps2 + ln(t/t0)|" "$vmean" 5e-3
+    checkBelow "square cup: plastic incompressibility, largest |eps1 + eps2 + ln(t/t0)|" "$vmax" 0.03
+    checkBelow "square cup: after springback (t = 2) the released punch carries no force (N)" \
+        "$(awk 'NR == 1 { for (i = 2; i <= NF; i++) if ($i == "punchForceMax") k = i - 1; next }
+                !/^#/ { t = $1; f = $k } END { if (k && t == 2) print (f < 0 ? -f : f) }' \
+           "$c/postProcessing/history.dat")" 1e-9
+    echo "    square cup: $(summary newtonIterationsPerStep) Newton its/step, $(summary cutbacks) cutbacks," \
+         "forming $(summary formingWallTime) s, springback $(summary springbackWallTime) s" \
+         "(ratio $(calc 's/f' s="$(summary springbackWallTime)" f="$(summary formingWallTime)"))"
+    [ -f "$c/punchForce.png" ] && [ -f "$c/formingLimit.png" ] && [ -f "$c/thickness.png" ] \
+        && pass "square cup plots written (punchForce.png, formingLimit.png, thickness.png)" \
+        || fail "square cup plots missing in $c (see log.plot*)"
+else
+    fail "square cup tutorial run (see $c/log.Allrun, $c/log.formFoam)"
+    tail -15 "$c/log.formFoam" 2>/dev/null | sed 's/^/    | /'
+fi
+[ -n "${KEEP:-}" ] && echo "    kept $c" || rm -rf "$c"
