@@ -28,23 +28,31 @@ tangentCheckResult checkTangentAlong
         1e-5*std::max(1.0, model.U().lpNorm<Eigen::Infinity>());
 
     vecX rp(dU.size()), rm(dU.size()), r(dU.size());
-    // The error of the central difference with step H along u
-    const auto errorAt = [&](double H, vecX& err) -> bool
+    // The central difference dr = (r(U + d) - r(U - d))/2 along the step
+    // d, back at U afterwards; false if a perturbed state is inadmissible
+    const auto centralDifference = [&](const vecX& d, vecX& dr) -> bool
     {
         bool ok = true;
         try
         {
-            model.addToFree(H*u);
+            model.addToFree(d);
             ok = model.evaluate(t, rp, false);
-            model.addToFree(-2*H*u);
+            model.addToFree(-2*d);
             ok = model.evaluate(t, rm, false) && ok;
         }
         catch (const numericalError&)
         {
             ok = false;
         }
-        model.addToFree(H*u);
-        err = (rp - rm)/(2*H) + Ku;
+        model.addToFree(d);
+        dr = 0.5*(rp - rm);
+        return ok;
+    };
+    // The error of the central difference with step H along u
+    const auto errorAt = [&](double H, vecX& err) -> bool
+    {
+        const bool ok = centralDifference(H*u, err);
+        err = err/H + Ku;
         return ok;
     };
     vecX err1, err2;
@@ -64,25 +72,16 @@ tangentCheckResult checkTangentAlong
         const sparseMatrix Kt = model.K().transpose();
         struct column { int j; double k, fd; };
         std::vector<column> cols;
-        for (sparseMatrix::InnerIterator it(Kt, i); it && ok; ++it)
+        bool columnsOk = true;
+        for (sparseMatrix::InnerIterator it(Kt, i); it && columnsOk; ++it)
         {
             const int j = int(it.row());
             const double H = h*0.1;
             vecX e = vecX::Zero(dU.size());
             e(j) = H;
-            try
-            {
-                model.addToFree(e);
-                ok = model.evaluate(t, rp, false);
-                model.addToFree(-2*e);
-                ok = model.evaluate(t, rm, false) && ok;
-            }
-            catch (const numericalError&)
-            {
-                ok = false;
-            }
-            model.addToFree(e);
-            cols.push_back({j, it.value(), -(rp(i) - rm(i))/(2*H)});
+            vecX dr;
+            columnsOk = centralDifference(e, dr);
+            if (columnsOk) cols.push_back({j, it.value(), -dr(i)/H});
         }
         std::sort
         (

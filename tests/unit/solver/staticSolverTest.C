@@ -191,10 +191,15 @@ TEST(staticSolver, TangentCheckAlongTheUpdatesFindsAWrongTangent)
         if (scale == 1)
         {
             EXPECT_LT(s.worstTangentCheck().relative, 1e-7) << log.str();
+            EXPECT_TRUE(s.worstTangentCheck().detail.empty());
         }
         else
         {
             EXPECT_NEAR(s.worstTangentCheck().relative, 0.05/1.05, 1e-4) << log.str();
+            // the worst row taken apart: its entries against central
+            // differences, the columns named
+            EXPECT_NE(s.worstTangentCheck().detail.find("central difference"), std::string::npos)
+                << s.worstTangentCheck().detail;
         }
         std::cout << "tangent scale " << scale << ": largest error "
             << s.worstTangentCheck().relative << " over "
