@@ -395,6 +395,17 @@ void contactModel::setShells(const shellSet* shells)
         std::map<int, int> side;
         for (const std::vector<int>& f : p.faces)
         {
+            if (f.size() == 3)
+            {
+                throw inputError
+                (
+                    spec.name + "/patch",
+                    "pair '" + spec.name + "': patch '" + spec.faceSet
+                  + "' is a face of triangular shell elements (MITC3+);"
+                    " contact of shells needs MITC4 or MITC4+ (triangles:"
+                    " not available yet)"
+                );
+            }
             if (f.size() != 4)
             {
                 throw inputError

@@ -428,10 +428,12 @@ void Foam::solidContact::checkOrientation3D
         scalar size = 0;
         for (const form::feFace& f : fe.faceSets.at(ps.faceSet))
         {
-            // corners counter-clockwise seen from outside (hexFaceNodes)
+            // corners counter-clockwise seen from outside (hexFaceNodes;
+            // a prism's triangle: its three corners), the corners first
+            const std::size_t last = f.nodes.size() == 3 ? 2 : 3;
             const form::vec3 X0 = fe.X.row(f.nodes[0]).transpose();
             const form::vec3 X1 = fe.X.row(f.nodes[1]).transpose();
-            const form::vec3 X3 = fe.X.row(f.nodes[3]).transpose();
+            const form::vec3 X3 = fe.X.row(f.nodes[last]).transpose();
             const form::vec3 n = (X1 - X0).cross(X3 - X0);
             size = max(size, (X1 - X0).norm());
             if (n.norm() == 0) continue;
