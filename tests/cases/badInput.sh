@@ -226,7 +226,7 @@ rm -rf "$base"
 base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
 cp -r "$formFoamTop/tests/cases/shellPlateTriangles/." "$base/"
 (cd "$base" && ./makeMesh > log.makeMesh 2>&1) || fail "makeMesh of shellPlateTriangles"
-tryCase "shells: a triangular shell's face in a rigid-tool pair" "pair 'plateTool'.*patch 'top' is a face of triangular shell elements \\(MITC3\\+\\).*MITC4 or MITC4\\+" \
+tryCase "shells: a triangular shell's face in a rigid-tool pair" "Entry 'plateTool/patch' in .*contactProperties.*pair 'plateTool'.*patch 'top' is a face of triangular shell elements \\(MITC3\\+\\).*MITC4 or MITC4\\+" \
     "printf 'FoamFile { version 2.0; format ascii; class dictionary; object contactProperties; }\ntools { lid { surface { type plane; point (0 0 0.1); normal (0 0 -1); } } }\npairs { plateTool { patch top; tool lid; } }\n' > constant/contactProperties"
 
 # Fluid: oil withdrawn beyond the cavity's volume (the piston, hydrostatic)

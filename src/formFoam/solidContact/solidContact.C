@@ -612,12 +612,14 @@ Foam::solidContact::solidContact(const Time& runTime, solidRegion& solid)
             solid_.feMesh().feMesh(), solid_.analysis(), E, tools, pairs,
             controls
         );
+        // (the shells' checks of the pairs run here: a pair on a sheet's
+        // side, on triangles, against a deformable target)
+        solid_.model().setContact(model_);
     }
     catch (const form::inputError& e)
     {
         fatalInput(dict_, e);
     }
-    solid_.model().setContact(model_);
 }
 
 
