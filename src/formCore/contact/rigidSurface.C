@@ -3,8 +3,9 @@
 -------------------------------------------------------------------------------
 Description
     Implementation of rigidSurface.H: closest-point projections onto
-    planes, spheres, cylinders, extruded and revolved profiles (triangles:
-    triangulatedSurface.C), and the tangent frame of a projection.
+    planes, spheres, cylinders, extruded, revolved, swept and path
+    profiles (triangles: triangulatedSurface.C), and the tangent frame of
+    a projection.
 \*---------------------------------------------------------------------------*/
 #include "rigidSurface.H"
 #include "triangulatedSurface.H"
@@ -203,6 +204,74 @@ public:
 };
 
 
+//- A profile in the (s, z) plane swept along a planar path
+//  (rigidSurface.H: pathProfile)
+class pathProfile : public rigidSurface
+{
+    std::shared_ptr<rigidProfile> profile_, path_;
+    vec3 o_, a_;
+    Eigen::Matrix<double, 3, 2> E_;     //!< [e1 e2]: the path's plane
+public:
+    explicit pathProfile(const surfaceInput& in)
+    :
+        profile_(in.profile),
+        path_(in.path),
+        o_(in.vector("origin")),
+        a_(in.direction("axis"))
+    {
+        if (!profile_)
+        {
+            throw inputError("profile", "pathProfile needs a profile");
+        }
+        if (!path_)
+        {
+            throw inputError
+            (
+                "path", "pathProfile needs a path (points in the plane"
+                " normal to the axis)"
+            );
+        }
+        const vec3 trial = in.direction("xAxis");
+        const vec3 w = trial - a_*a_.dot(trial);
+        if (!(w.norm() > 1e-6))
+        {
+            throw inputError("xAxis", "entry 'xAxis' is parallel to 'axis'");
+        }
+        E_.col(0) = w.normalized();
+        E_.col(1) = a_.cross(E_.col(0));
+    }
+    std::string type() const override { return "pathProfile"; }
+    surfaceProjection project(const vec3& y) const override
+    {
+        const vec3 d = y - o_;
+        const profileProjection p = path_->project(E_.transpose()*d);
+        if (p.vertex)
+        {
+            throw numericalError
+            (
+                "pathProfile: the point (" + std::to_string(y(0)) + " "
+              + std::to_string(y(1)) + " " + std::to_string(y(2))
+              + ") lies beyond an end of the tool's path or at a sharp"
+                " corner of it: extend the path beyond the sheet and give"
+                " every interior path point a fillet radius (pathRadii)"
+            );
+        }
+        // s = -g_path (left of the path), m = ds/dy its left normal
+        const vec3 m = -(E_*p.normal);
+        const profileProjection q =
+            profile_->project(Eigen::Vector2d(-p.gap, a_.dot(d)));
+        Eigen::Matrix<double, 3, 2> Bm;
+        Bm.col(0) = m;
+        Bm.col(1) = a_;
+        surfaceProjection P;
+        P.gap = q.gap;
+        P.normal = Bm*q.normal;
+        P.dNormalDY = Bm*q.dNormalDY*Bm.transpose()
+          - q.normal(0)*(E_*p.dNormalDY*E_.transpose());
+        return P;
+    }
+};
+
 const bool registered = []()
 {
     auto& reg = rigidSurface::registry();
@@ -230,6 +299,10 @@ const bool registered = []()
     reg["sweptProfile"] = [](const surfaceInput& in)
     {
         return std::unique_ptr<rigidSurface>(new sweptProfile(in, false));
+    };
+    reg["pathProfile"] = [](const surfaceInput& in)
+    {
+        return std::unique_ptr<rigidSurface>(new pathProfile(in));
     };
     return true;
 }();
@@ -326,7 +399,8 @@ std::unique_ptr<rigidSurface> rigidSurface::New
     std::map<std::string, vec3> vectors,
     std::map<std::string, double> scalars,
     std::shared_ptr<rigidProfile> profile,
-    std::shared_ptr<const triangulation> triangles
+    std::shared_ptr<const triangulation> triangles,
+    std::shared_ptr<rigidProfile> path
 )
 {
     (void)registered;
@@ -342,7 +416,7 @@ std::unique_ptr<rigidSurface> rigidSurface::New
     surfaceInput in
     {
         std::move(vectors), std::move(scalars), std::move(profile),
-        std::move(triangles)
+        std::move(triangles), std::move(path)
     };
     return it->second(in);
 }

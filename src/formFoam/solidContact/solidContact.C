@@ -85,26 +85,29 @@ form::rigidToolSpec Foam::solidContact::readTool
 
 std::shared_ptr<form::rigidProfile> Foam::solidContact::readProfile
 (
-    const dictionary& td
+    const dictionary& td,
+    const word& pointsKey,
+    const word& radiiKey,
+    const word& radiusKey
 )
 {
-    const List<vector2D> pts = td.get<List<vector2D>>("profile");
+    const List<vector2D> pts = td.get<List<vector2D>>(pointsKey);
     std::vector<Eigen::Vector2d> points;
     for (const vector2D& p : pts) points.emplace_back(p.x(), p.y());
     std::vector<double> radii;
-    if (td.found("radii") && td.found("radius"))
+    if (td.found(radiiKey) && td.found(radiusKey))
     {
         FatalIOErrorInFunction(td)
-            << "Give either 'radii' or 'radius' in " << td.name()
-            << ", not both" << exit(FatalIOError);
+            << "Give either '" << radiiKey << "' or '" << radiusKey
+            << "' in " << td.name() << ", not both" << exit(FatalIOError);
     }
-    if (td.found("radii"))
+    if (td.found(radiiKey))
     {
-        for (const scalar r : td.get<scalarList>("radii")) radii.push_back(r);
+        for (const scalar r : td.get<scalarList>(radiiKey)) radii.push_back(r);
     }
-    else if (td.found("radius"))
+    else if (td.found(radiusKey))
     {
-        radii.push_back(td.get<scalar>("radius"));
+        radii.push_back(td.get<scalar>(radiusKey));
     }
     std::shared_ptr<form::rigidProfile> profile;
     try
@@ -113,7 +116,11 @@ std::shared_ptr<form::rigidProfile> Foam::solidContact::readProfile
     }
     catch (const form::inputError& e)
     {
-        fatalInput(td, e);
+        // the profile's entries under the names of this dictionary
+        const std::string entry =
+            e.entry() == "points" ? pointsKey
+          : e.entry() == "radii" ? radiiKey : e.entry();
+        fatalInput(td, form::inputError(entry, e.what()));
     }
     return profile;
 }
@@ -173,6 +180,7 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
         {"extrudedProfile", {"origin", "xAxis", "yAxis", "profile", "radii", "radius"}},
         {"revolvedProfile", {"origin", "axis", "profile", "radii", "radius"}},
         {"sweptProfile", {"origin", "axis", "xAxis", "coreX", "coreY", "profile", "radii", "radius"}},
+        {"pathProfile", {"origin", "axis", "xAxis", "path", "pathRadii", "pathRadius", "profile", "radii", "radius"}},
         {"triSurface", {"file", "flipNormals", "featureAngle"}}
     };
     const auto it = keys.find(type);
@@ -191,10 +199,17 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
     std::shared_ptr<form::rigidProfile> profile;
     const bool profiled =
         type == "extrudedProfile" || type == "revolvedProfile"
-     || type == "sweptProfile";
+     || type == "sweptProfile" || type == "pathProfile";
     for (const word& k : it->second)
     {
-        if (k == "profile" || k == "radii" || k == "file") continue;
+        if
+        (
+            k == "profile" || k == "radii" || k == "file" || k == "path"
+         || k == "pathRadii" || k == "pathRadius"
+        )
+        {
+            continue;
+        }
         if (k == "flipNormals")
         {
             scalars[k] = sd.getOrDefault<bool>(k, false) ? 1 : 0;
@@ -223,6 +238,11 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
         }
     }
     if (profiled) profile = readProfile(sd);
+    std::shared_ptr<form::rigidProfile> path;
+    if (type == "pathProfile")
+    {
+        path = readProfile(sd, "path", "pathRadii", "pathRadius");
+    }
     std::shared_ptr<const form::triangulation> triangles;
     if (type == "triSurface") triangles = readTriangles(sd);
     std::shared_ptr<form::rigidSurface> surface;
@@ -230,7 +250,7 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
     {
         surface = form::rigidSurface::New
         (
-            type, vectors, scalars, profile, triangles
+            type, vectors, scalars, profile, triangles, path
         );
     }
     catch (const form::inputError& e)

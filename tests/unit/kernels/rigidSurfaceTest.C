@@ -1,7 +1,8 @@
 // Rigid tool surfaces in 3D (rigidSurface.H): the plane, sphere and
 // cylinder in closed form, 2D profiles extruded along a direction and
-// revolved about an axis or swept around a rectangular core (through the
-// tested rigidProfile projection with exact curvature). For each: the gap against a brute-force distance to
+// revolved about an axis, swept around a rectangular core or along a
+// planar path (through the tested rigidProfile projection with exact
+// curvature). For each: the gap against a brute-force distance to
 // the surface, the normal, and dg/dy = n, dn/dy against central
 // differences at random points on both sides of the surface; the
 // tangent frame (tangentFrame) and its derivatives. FD tolerances about
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include <random>
+#include <tuple>
 #include "../fdCheck.H"
 #include "surfaceTestTools.H"
 
@@ -19,18 +21,21 @@ using namespace form;
 namespace
 {
 
-// dn/dy and dg/dy = n by central differences at y
+// dn/dy and dg/dy = n by central differences of step h at y (1e-5 where
+// the coordinates are some 50 and round-off, eps |y|/h, would be 5e-9
+// at 1e-6)
 void checkDerivatives
 (
     const rigidSurface& s,
     const vec3& y,
-    const std::string& what
+    const std::string& what,
+    double h = 1e-6
 )
 {
     const surfaceProjection P = s.project(y);
     mat3 dN;
     vec3 dG;
-    test::surfaceDifferences(s, y, 1e-6, dG, dN);
+    test::surfaceDifferences(s, y, h, dG, dN);
     EXPECT_NEAR(P.normal.norm(), 1, 1e-13) << what;
     EXPECT_TRUE(test::fdError("rigidSurface dg/dy = n", (dG - P.normal).norm()/(1 + y.norm()), 1e-9))
         << what << " y " << y.transpose();
@@ -247,6 +252,121 @@ TEST(rigidSurface, sweptProfileIsExtrudedAlongSidesAndRevolvedAtCorners)
         ),
         inputError
     );
+}
+
+TEST(rigidSurface, pathProfileIsTheProfileSweptAlongAnSBend)
+{
+    // A hat punch (the cross-section in (s, z): walls s = -+3, face z = 0,
+    // nose radii 1) swept along an S-shaped path in the plane normal to
+    // the axis: a line along e1 from (-50, 0), a left turn (fillet radius
+    // 20 about the centre (0, 20)), a line at 45 degrees and a right turn
+    // back (fillet 20), a line along e1 to the end. s is the distance from
+    // the path, positive on its left (e2 where the path runs along e1).
+    // Reference: along a line the profile extruded; along a fillet the
+    // profile revolved about the fillet's axis, r = R - s (left turn) or
+    // R + s (right turn).
+    const std::vector<Eigen::Vector2d> hat{{-3, 10}, {-3, 0}, {3, 0}, {3, 10}};
+    const auto outline = std::make_shared<rigidProfile>(hat, std::vector<double>{1, 1});
+    const double R = 20, k = std::tan(M_PI/8);   // e = R tan(22.5 deg)
+    const auto path = std::make_shared<rigidProfile>
+    (
+        std::vector<Eigen::Vector2d>{{-50, 0}, {R*k, 0}, {R*k + 40, 40}, {200, 40}},
+        std::vector<double>{R, R}
+    );
+    const vec3 a = vec3(0.2, -0.1, 1).normalized();
+    const vec3 e1 = (vec3(1, 0.3, 0) - a*a.dot(vec3(1, 0.3, 0))).normalized();
+    const vec3 e2 = a.cross(e1);
+    const vec3 o(1, -2, 0.5);
+    const auto punch = rigidSurface::New
+    (
+        "pathProfile",
+        {{"origin", o}, {"axis", a}, {"xAxis", vec3(1, 0.3, 0)}},
+        {}, outline, nullptr, path
+    );
+    // The references: mirror a profile in s (the walking order reversed
+    // keeps the tool on the left)
+    auto shifted = [&](double shift, double sign)
+    {
+        std::vector<Eigen::Vector2d> p;
+        for (const auto& v : hat) p.emplace_back(shift + sign*v(0), v(1));
+        if (sign < 0) std::reverse(p.begin(), p.end());
+        return std::make_shared<rigidProfile>(p, std::vector<double>{1, 1});
+    };
+    const auto straight = rigidSurface::New
+    (
+        "extrudedProfile",
+        {{"origin", o}, {"xAxis", e2}, {"yAxis", a}}, {}, outline
+    );
+    const vec3 cLeft = o + 20*e2;                       // first fillet's centre
+    const auto leftTurn = rigidSurface::New
+    ("revolvedProfile", {{"origin", cLeft}, {"axis", a}}, {}, shifted(R, -1));
+    // the second fillet's centre: under its end on the last line
+    const Eigen::Vector2d c2(2*R*k + 40, 40 - R);
+    const vec3 cRight = o + c2(0)*e1 + c2(1)*e2;
+    const auto rightTurn = rigidSurface::New
+    ("revolvedProfile", {{"origin", cRight}, {"axis", a}}, {}, shifted(R, 1));
+    std::mt19937 gen(17);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < 40; ++i)
+    {
+        const double s = -6 + 12*u(gen), z = -2 + 6*u(gen);
+        // on the first line (x1 < 0), on the fillets (a quarter of their
+        // sweep in)
+        const vec3 yLine = o + (-40 + 35*u(gen))*e1 + s*e2 + z*a;
+        const double phi = (0.1 + 0.8*u(gen))*M_PI/4;
+        const vec3 yLeft =
+            cLeft + (R - s)*(std::sin(phi)*e1 - std::cos(phi)*e2) + z*a;
+        const vec3 yRight =
+            cRight + (R + s)*(-std::sin(phi)*e1 + std::cos(phi)*e2) + z*a;
+        for
+        (
+            const auto& [y, ref, what] :
+            std::vector<std::tuple<vec3, const rigidSurface*, std::string>>
+            {
+                {yLine, straight.get(), "line"},
+                {yLeft, leftTurn.get(), "left turn"},
+                {yRight, rightTurn.get(), "right turn"}
+            }
+        )
+        {
+            const surfaceProjection P = punch->project(y), Q = ref->project(y);
+            EXPECT_NEAR(P.gap, Q.gap, 1e-11) << what << " s " << s << " z " << z;
+            EXPECT_LT((P.normal - Q.normal).norm(), 1e-11) << what;
+            EXPECT_LT((P.dNormalDY - Q.dNormalDY).norm(), 1e-10*(1 + Q.dNormalDY.norm()))
+                << what << "\n" << P.dNormalDY << "\nreference\n" << Q.dNormalDY;
+            checkDerivatives(*punch, y, "path profile, " + what, 1e-5);
+        }
+    }
+    // Everywhere along the S (the 45-degree line and the joints too),
+    // within |s| < 10 (the sweep is smooth where |s| < R)
+    for (int i = 0; i < 60; ++i)
+    {
+        const Eigen::Vector2d p = path->pointAt(5 + (path->length() - 10)*u(gen));
+        const Eigen::Vector2d x = p - (-10 + 20*u(gen))*path->project(p).normal;
+        const vec3 y = o + x(0)*e1 + x(1)*e2 + (-2 + 6*u(gen))*a;
+        checkDerivatives(*punch, y, "path profile, anywhere", 1e-5);
+    }
+    // Beyond the end of the path: an error that says so
+    try
+    {
+        punch->project(o - 60*e1);
+        ADD_FAILURE() << "no error beyond the path's start";
+    }
+    catch (const numericalError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("beyond"), std::string::npos) << e.what();
+    }
+    // Bad input names the entry
+    try
+    {
+        rigidSurface::New
+        ("pathProfile", {{"origin", o}, {"axis", a}, {"xAxis", e1}}, {}, outline);
+        ADD_FAILURE() << "no error without a path";
+    }
+    catch (const inputError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("path"), std::string::npos) << e.what();
+    }
 }
 
 TEST(rigidSurface, tangentFrameAndItsDerivatives)
