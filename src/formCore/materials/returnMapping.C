@@ -30,6 +30,18 @@ const double tolYield = 1e-11;
 //  precision (extreme trial stresses, see update)
 const double tolYieldFloor = 1e-9;
 
+//- A trial state within onSurface sigmaY above the yield surface takes
+//  the elastic tangent (its stress is still returned: continuous, so the
+//  plane-stress iteration and the residual see no jump): the committed
+//  state re-evaluated (a step's first Newton iterate without a
+//  predictor, e.g. a tool release) lies on the surface only to the
+//  return mapping's tolerance (tolYieldFloor) and round-off, where the
+//  elastic-plastic tangent would be taken by chance of the last bit; the
+//  elastic one is the tangent of unloading, and a loading increment
+//  leaves the band at once (1e-8 sigmaY is an elastic strain of about
+//  1e-11)
+const double onSurface = 1e-8;
+
 //- Newton iterations on g; bisection alone would reach machine precision
 //  on the bracket in about 50
 const int maxOuter = 100;
@@ -370,7 +382,7 @@ bool plasticity::update
     // ds = ds_tr - S n dlambda - 2G dgamma S d2phi dxi
     const mat6 dsdsTr = mat6::Identity() - Sn*X.row(6)
         - 2*G_*dgamma*Sv.asDiagonal()*d2phi*X.topRows<6>();
-    tangentDev = dsdsTr*Ce_;
+    tangentDev = fTr <= onSurface*syN ? Ce_ : mat6(dsdsTr*Ce_);
 
     return stressDev.allFinite() && tangentDev.allFinite();
 }

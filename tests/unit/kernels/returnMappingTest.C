@@ -668,6 +668,43 @@ TEST(returnMapping, elasticStepReturnsElasticTangentExactly)
     }
 }
 
+TEST(returnMapping, committedStateOnTheSurfaceTakesTheElasticTangent)
+{
+    // A step's first Newton iterate without a predictor (a tool release,
+    // springback) re-evaluates the committed state: the trial stress is
+    // the committed stress, on the yield surface to the return mapping's
+    // tolerance. It must take the elastic tangent (the tangent of
+    // unloading; the elastic-plastic one, by chance of the last bit, made
+    // the S-rail's release overshoot by 50 mm and cut back, 2026-11-27)
+    // and return the committed stress, and the least loading beyond it
+    // is plastic with the elastic-plastic tangent.
+    std::mt19937 rng(23);
+    for (const auto& m : allModels())
+    {
+        for (int k = 0; k < 5; ++k)
+        {
+            const plasticState c = randomState(m, rng);
+            const vec6 e = trialStrain(m, c, randomDev(rng), 1.5, 0.01);
+            const result r = run(*m.p, e, c);
+            ASSERT_TRUE(r.ok) << m.name;
+            ASSERT_GT(r.iterations, 0) << m.name;
+            const vec6 eElastic = e - r.dEp;
+            const result again = run(*m.p, eElastic, r.state);
+            ASSERT_TRUE(again.ok) << m.name;
+            EXPECT_LT(again.state.epsP - r.state.epsP, 1e-12) << m.name;
+            const mat6 Ce = 2*Gmod*Idev();
+            EXPECT_EQ((again.C - Ce).cwiseAbs().maxCoeff(), 0) << m.name;
+            EXPECT_LT((again.s - r.s).norm(), 1e-9*r.s.norm()) << m.name;
+            // loading on by 1e-7 of the strain: plastic again
+            const result on = run(*m.p, eElastic + 1e-7*r.dEp/r.dEp.norm(), r.state);
+            ASSERT_TRUE(on.ok) << m.name;
+            EXPECT_GT(on.iterations, 0) << m.name;
+            EXPECT_GT(on.state.epsP, r.state.epsP) << m.name;
+            EXPECT_GT((on.C - Ce).cwiseAbs().maxCoeff(), 1e-3*Gmod) << m.name;
+        }
+    }
+}
+
 TEST(returnMapping, outputSatisfiesBackwardEulerEquations)
 {
     std::mt19937 rng(6);
