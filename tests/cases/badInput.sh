@@ -217,6 +217,16 @@ tryCase "sheet: a forming limit margin without a forming limit curve" "summary.m
     "sed -i 's/^summary$/summary\n{ margin { type formingLimitMargin; } }\nsummaryOld/' system/solidSolution; sed -i '/^summaryOld/,/^}/d' system/solidSolution"
 tryCase "sheet: a surface strain of unknown quantity" "Entry 'quantity' in .*solidSolution.*unknown 'thickness'; valid: major minor" \
     "sed -i 's/^summary$/summary\n{ e { type surfaceStrain; quantity thickness; } }\nsummaryOld/' system/solidSolution; sed -i '/^summaryOld/,/^}/d' system/solidSolution"
+tryCase "sheet: a pathProfile tool without its path" "Entry 'path' in .*contactProperties.*punch.surface.*: pathProfile needs a path" \
+    "sed -i '0,/coreX 25; coreY 25;/s//pathRadius 10;/; 0,/type sweptProfile;/s//type pathProfile;/' constant/contactProperties"
+tryCase "sheet: a pathProfile path with a fillet that does not fit" "Entry 'pathRadii' in .*contactProperties.*punch.surface.*fillet radius 200 at vertex 1 .*does not fit" \
+    "sed -i '0,/coreX 25; coreY 25;/s//path ((-100 0) (0 0) (5 5) (100 5)); pathRadii (200 200);/; 0,/type sweptProfile;/s//type pathProfile;/' constant/contactProperties"
+tryCase "summary: a maxDisplacement normal to a zero direction" "Entry 'normalTo' in .*solidSolution.*a non-zero direction" \
+    "sed -i 's/^summary$/summary\n{ e { type maxDisplacement; normalTo (0 0 0); } }\nsummaryOld/' system/solidSolution; sed -i '/^summaryOld/,/^}/d' system/solidSolution"
+tryCase "summary: an angle of three points" "Entry 'points' in .*solidSolution.*four points \\(A B C D\\)" \
+    "sed -i 's/^summary$/summary\n{ e { type angle; points ((0 0 0) (10 0 0) (0 10 0)); } }\nsummaryOld/' system/solidSolution; sed -i '/^summaryOld/,/^}/d' system/solidSolution"
+tryCase "summary: a maxDisplacement since a time the run never writes" "Entry 'since' in .*solidSolution.*no state of time 0.0123.*the end of a process step or a written time" \
+    "sed -i 's/^summary$/summary\n{ e { type maxDisplacement; since 0.0123; } }\nsummaryOld/' system/solidSolution; sed -i '/^summaryOld/,/^}/d' system/solidSolution"
 
 # Triangular shells (MITC3+, the plate of shellPlateTriangles) against a
 # rigid tool: not available yet, said clearly (before 2026-11-27 the

@@ -162,7 +162,7 @@ bad()   # bad <label> <regex> <edit>
 }
 bad "3D tool given as a 2D profile" "Unknown entry 'profile'|unknown entry 'profile'" \
     "sed -i 's/ground { surface { type plane; point (0 0 0); normal (0 0 1); } }/ground { profile ((1 0) (-1 0)); }/' constant/contactProperties"
-bad "unknown surface type" "unknown surface type 'cone'; valid: cylinder extrudedProfile plane revolvedProfile sphere sweptProfile triSurface" \
+bad "unknown surface type" "unknown surface type 'cone'; valid: cylinder extrudedProfile pathProfile plane revolvedProfile sphere sweptProfile triSurface" \
     "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type cone; point (0 0 0);/' constant/contactProperties"
 bad "sphere without radius" "missing entry 'radius'" \
     "sed -i 's/type plane; point (0 0 0); normal (0 0 1);/type sphere; centre (0 0 -5);/' constant/contactProperties"

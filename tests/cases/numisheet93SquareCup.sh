@@ -36,14 +36,9 @@ if (cd "$c" && timeout 1800 ./Allrun > log.Allrun 2>&1) && [ -f "$c/postProcessi
     checkBetween "square cup: draw-in along the diagonal below that along x at 40 mm" \
         "$(summary drawInDiagonal40)" 0 "$(summary drawInX40)"
     checkClose "square cup: draw-in along y as along x (r0 ~ r90)" "$(summary drawInY40)" "$(summary drawInX40)" 0.01
-    values()
-    {
-        awk '/^internalField/ { f = 1; next } f == 1 && /^[0-9]+$/ { next }
-             f == 1 && /^\($/ { f = 2; next } f == 2 && /^\)/ { exit } f == 2 { print }' "$1"
-    }
     t0=$(foamDictionary -entry thickness -value "$c/constant/caseParameters")
-    read -r vmean vmax < <(paste <(values "$c/1/blank/majorStrain") <(values "$c/1/blank/minorStrain") \
-        <(values "$c/1/blank/thickness") | awk -v t0="$t0" \
+    read -r vmean vmax < <(paste <(formFieldValues "$c/1/blank/majorStrain") <(formFieldValues "$c/1/blank/minorStrain") \
+        <(formFieldValues "$c/1/blank/thickness") | awk -v t0="$t0" \
         'NF == 3 { s = $1 + $2 + log($3/t0); if (s < 0) s = -s; if (s > m) m = s; t += s; n++ }
          END { if (n) printf "%.4g %.4g\n", t/n, m }')
     checkBelow "square cup: plastic incompressibility, mean |eps1 + eps2 + ln(t/t0)|" "$vmean" 5e-3

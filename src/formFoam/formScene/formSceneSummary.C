@@ -173,6 +173,47 @@ void Foam::formScene::readSummary()
                     << x << "'; valid: min max" << exit(FatalIOError);
             }
         }
+        else if (type == "maxDisplacement")
+        {
+            // The largest displacement over the nodes (of a patch), less
+            // its component along normalTo, since a time (maxDisplacement
+            // in formScene.H)
+            keys.append(wordList{"patch", "normalTo", "since"});
+            if
+            (
+                ed.found("normalTo")
+             && !(mag(ed.get<vector>("normalTo")) > 0)
+            )
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'normalTo' in " << ed.name() << ": a non-zero"
+                    << " direction" << exit(FatalIOError);
+            }
+            if (ed.found("since"))
+            {
+                se.hasSince = true;
+                se.since = ed.get<scalar>("since");
+                if (!(se.since >= 0 && se.since < steps_.endTime))
+                {
+                    FatalIOErrorInFunction(ed)
+                        << "Entry 'since' in " << ed.name() << " is out of"
+                        << " range: " << se.since << " (valid: a time of the"
+                        << " run before endTime " << steps_.endTime << ")"
+                        << exit(FatalIOError);
+                }
+            }
+        }
+        else if (type == "angle")
+        {
+            keys.append(word("points"));
+            if (ed.get<List<point>>("points").size() != 4)
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'points' in " << ed.name() << ": four points"
+                    << " (A B C D): the angle between the lines AB and CD"
+                    << exit(FatalIOError);
+            }
+        }
         else if (type == "difference")
         {
             keys.append(word("of"));
@@ -226,7 +267,7 @@ void Foam::formScene::readSummary()
                 << nl << "    Valid types: displacement position reaction"
                 << " circleRadius rotation bendingRadius extent difference"
                 << " uChannelSpringback shellThickness directorRotation"
-                << " surfaceStrain formingLimitMargin"
+                << " surfaceStrain formingLimitMargin maxDisplacement angle"
                 << (contact_ ? " toolForce toolPosition" : "")
                 << (
                        !fluid_ ? ""
@@ -254,6 +295,7 @@ void Foam::formScene::readSummary()
                 << "    Valid in 3D: displacement position reaction extent"
                 << " difference uChannelSpringback shellThickness"
                 << " directorRotation surfaceStrain formingLimitMargin"
+                << " maxDisplacement angle"
                 << (contact_ ? " toolForce toolPosition" : "")
                 << exit(FatalIOError);
         }
@@ -305,7 +347,7 @@ void Foam::formScene::readSummary()
             "displacement", "position", "reaction", "circleRadius",
             "rotation", "bendingRadius", "extent", "uChannelSpringback",
             "shellThickness", "directorRotation", "surfaceStrain",
-            "formingLimitMargin"
+            "formingLimitMargin", "maxDisplacement", "angle"
         };
         if (solids_.empty() && solidTypes.found(type))
         {
@@ -417,6 +459,23 @@ Foam::scalar Foam::formScene::evaluate(const summaryEntry& e) const
     else if (type == "formingLimitMargin")
     {
         value = s.formingLimitMargin(ed);
+    }
+    else if (type == "maxDisplacement")
+    {
+        // before 'since' (or not yet reached when the summary is read): 0
+        if (e.hasSince && !e.reference) return 0;
+        value = s.maxDisplacement
+        (
+            ed.getOrDefault<word>("patch", word::null),
+            ed.getOrDefault<vector>("normalTo", Zero),
+            e.reference.get(),
+            ed
+        );
+    }
+    else if (type == "angle")
+    {
+        value = s.lineAngle(ed.get<List<point>>("points"), ed)
+            *180/constant::mathematical::pi;
     }
     else if (type == "bendingRadius")
     {
@@ -654,6 +713,7 @@ void Foam::formScene::recordSummary(scalar time, bool first)
     os << time;
     for (summaryEntry& e : summary_)
     {
+        sinceReference(e, time);
         const scalar v = evaluate(e);
         os << ' ' << v;
         updateEntry(e, time, v, first);
@@ -666,6 +726,26 @@ void Foam::formScene::recordSummary(scalar time, bool first)
             << "Cannot append to " << dir/"history.dat" << " (disk full?)"
             << exit(FatalError);
     }
+}
+
+
+void Foam::formScene::sinceReference(summaryEntry& e, scalar time)
+{
+    if (!e.hasSince || e.reference) return;
+    const scalar tol = 1e-9*max(mag(e.since), 1.0);
+    if (time < e.since - tol) return;
+    const solidRegion& s = solids_[0];
+    if (time <= e.since + tol)
+    {
+        e.reference =
+            std::make_shared<const form::matX>(s.model().displacement());
+        return;
+    }
+    // After 'since' without its state (a restart): from its time directory
+    e.reference = std::make_shared<const form::matX>
+    (
+        s.displacementState(runTime_.timeName(e.since), e.dict)
+    );
 }
 
 

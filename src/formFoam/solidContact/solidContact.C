@@ -239,7 +239,7 @@ std::shared_ptr<form::rigidSurface> Foam::solidContact::readSurface
     }
     if (profiled) profile = readProfile(sd);
     std::shared_ptr<form::rigidProfile> path;
-    if (type == "pathProfile")
+    if (type == "pathProfile" && sd.found("path"))
     {
         path = readProfile(sd, "path", "pathRadii", "pathRadius");
     }

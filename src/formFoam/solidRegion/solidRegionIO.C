@@ -320,6 +320,42 @@ void Foam::solidRegion::resumeVTK(scalar restartTime)
 }
 
 
+form::matX Foam::solidRegion::displacementState
+(
+    const word& timeName,
+    const dictionary& dict
+) const
+{
+    IOobject io
+    (
+        "feU", timeName, *mesh_, IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    const form::feMesh& fe = feMesh_->feMesh();
+    if (!io.typeHeaderOk<IOField<vector>>(true))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'since' in " << dict.name() << ": no state of time "
+            << timeName << " (" << io.objectPath() << "): 'since' must be"
+            << " the end of a process step or a written time"
+            << exit(FatalIOError);
+    }
+    const IOField<vector> feU(io);
+    if (feU.size() != fe.nNodes())
+    {
+        FatalIOErrorInFunction(dict)
+            << "State " << feU.objectPath() << " has " << feU.size()
+            << " nodes; the mesh of region '" << name_ << "' has "
+            << fe.nNodes() << exit(FatalIOError);
+    }
+    form::matX U(fe.nNodes(), fe.nDim);
+    for (int n = 0; n < fe.nNodes(); ++n)
+    {
+        for (int c = 0; c < fe.nDim; ++c) U(n, c) = feU[n][c];
+    }
+    return U;
+}
+
+
 bool Foam::solidRegion::readState(const word& timeName)
 {
     IOobject io

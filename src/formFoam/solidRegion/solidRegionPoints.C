@@ -6,12 +6,15 @@ Description
     point of the polyMesh space (shells: a node of the mid-surface, or a
     point on its initial director within the sheet, e.g. of a face):
     point forces and moments (solidProperties pointLoads), components
-    held at a node (solidProperties pin, and the pin of process steps).
+    held at a node (solidProperties pin, and the pin of process steps);
+    measures over nodes and points (the summary's maxDisplacement and
+    angle).
 \*---------------------------------------------------------------------------*/
 #include "solidRegion.H"
 #include "shellSet.H"
 #include "dictionaryChecks.H"
 #include "Function1.H"
+#include "pointLocator.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
@@ -191,6 +194,77 @@ void Foam::solidRegion::readPointLoads()
             }
         }
     }
+}
+
+
+Foam::scalar Foam::solidRegion::maxDisplacement
+(
+    const word& patch,
+    const vector& normalTo,
+    const form::matX* ref,
+    const dictionary& dict
+) const
+{
+    const form::feMesh& fe = feMesh_->feMesh();
+    std::vector<int> all;
+    if (patch.empty())
+    {
+        all.resize(fe.nNodes());
+        for (int n = 0; n < fe.nNodes(); ++n) all[n] = n;
+    }
+    const std::vector<int>& nodes = patch.empty() ? all : patchNodes(patch, dict);
+    form::matX U = model_->displacement();
+    if (ref) U -= *ref;
+    form::vecX d = form::vecX::Zero(fe.nDim);
+    const scalar m = mag(normalTo);
+    for (int c = 0; c < fe.nDim; ++c) d(c) = m > 0 ? normalTo[c]/m : 0;
+    scalar value = 0;
+    for (const int n : nodes)
+    {
+        const form::vecX u = U.row(n).transpose();
+        value = max(value, (u - d*d.dot(u)).norm());
+    }
+    return value;
+}
+
+
+Foam::scalar Foam::solidRegion::lineAngle
+(
+    const List<point>& pts,
+    const dictionary& dict
+) const
+{
+    const form::feMesh& fe = feMesh_->feMesh();
+    const form::matX U = model_->displacement();
+    // the current position of a material point: shells the mid-surface
+    // node's, solids interpolated
+    auto current = [&](const point& p) -> form::vecX
+    {
+        if (model_->shells())
+        {
+            const label n = nodeAt(p, dict);
+            return (fe.X.row(n) + U.row(n)).transpose();
+        }
+        const form::vecX X = feMesh_->toFe(p);
+        const form::pointLocation loc = form::locatePoint(fe, X, 1e-6);
+        if (!loc.found())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Point " << p << " in " << dict.name()
+                << " lies outside the mesh of solid region '" << name_
+                << "'" << exit(FatalIOError);
+        }
+        return X + form::interpolate(fe, loc, U);
+    };
+    const form::vecX a = current(pts[1]) - current(pts[0]);
+    const form::vecX b = current(pts[3]) - current(pts[2]);
+    if (!(a.norm() > 0 && b.norm() > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'points' in " << dict.name() << ": A and B, or C and"
+            << " D, are the same point: no line" << exit(FatalIOError);
+    }
+    return std::acos(max(-1.0, min(1.0, a.dot(b)/(a.norm()*b.norm()))));
 }
 
 
