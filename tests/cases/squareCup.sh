@@ -21,8 +21,14 @@
 #     flange is compressed the most);
 #   - Newton converges quadratically at the end of the steps (observed
 #     order, median over the steps, at least 1.8);
-#   - a restart from the state written at mid-stroke reproduces the
-#     continuous run's punch force and draw-ins to 1e-10;
+#   - summary type maxDisplacement: the flange edges' largest in-plane
+#     displacement is at least the draw-in at the edge's point on the
+#     axis (drawInX) and below twice it; the largest displacement since
+#     t = 0.05 (the end of the first process step) is positive;
+#   - a restart from the state written at mid-stroke (t = 0.05, that
+#     step's end) reproduces the continuous run's punch force, draw-ins
+#     and the displacement since t = 0.05 (which reads that state back
+#     from its time directory after the restart) to 1e-10;
 #   - formFoam -checkTangent: the Newton matrix agrees with central
 #     differences of the residual along the Newton updates (median).
 . "$(dirname "$0")/testFunctions"
@@ -41,6 +47,10 @@ if runCopy squareCup "$c" blank && [ -f "$c/postProcessing/summary" ]; then
         "$(calc 'abs(p + d + h)/abs(d)' p="$(v punchForceZ)" d="$(v dieForceZ)" h="$(v holderForceZ)")" 1e-6
     checkBetween "square cup: draw-in along the diagonal (mm)" "$(v drawInDiagonal)" 0 "$(v drawInX)"
     checkBelow "square cup: Newton order (median over the steps) above 1.8" 1.8 "$(newtonOrder "$c/log.formFoam")"
+    checkBetween "square cup: the flange edges' largest in-plane displacement (maxDisplacement) between drawInX and twice it" \
+        "$(v edgeDrawIn)" "$(v drawInX)" "$(calc '2*d' d="$(v drawInX)")"
+    checkBetween "square cup: the largest displacement since t = 0.05 (maxDisplacement since)" \
+        "$(v movedSince)" 1e-6 100
     # Restart from the written state in the middle of the stroke: the
     # rest of the run reproduces the continuous one (shell frames and
     # thickness, contact closest points, frames and multipliers, the
@@ -54,7 +64,7 @@ if runCopy squareCup "$c" blank && [ -f "$c/postProcessing/summary" ]; then
         sed -i 's/^startFrom .*/startFrom       latestTime;/' "$r/system/controlDict"
         if (cd "$r" && timeout 600 formFoam > log.restart 2>&1) \
            && grep -q "Restarting from the state written at time ${tr##*/}" "$r/log.restart"; then
-            for e in punchForceZ drawInX drawInDiagonal; do
+            for e in punchForceZ drawInX drawInDiagonal movedSince; do
                 checkClose "square cup: restart at t = ${tr##*/}: $e vs the continuous run" \
                     "$(summaryValue "$r" $e)" "$(v $e)" 1e-10
             done
@@ -82,7 +92,8 @@ fi
 t=$work/tangent
 if FORMFOAM_ARGS=-checkTangent runCopy squareCup "$t" blank \
        "sed -i 's/^endTime .*/endTime 0.02;/' system/controlDict" \
-       "sed -i 's/forming { endTime 0.1;/forming { endTime 0.02;/' constant/processSchedule" \
+       "sed -i 's/forming { endTime 0.05;/forming { endTime 0.02;/; /drawing { endTime 0.1;/d' constant/processSchedule" \
+       "sed -i '/movedSince/d' system/solidSolution" \
    && [ -f "$t/postProcessing/summary" ]; then
     checkBelow "square cup, -checkTangent: median error of the Newton matrix along the updates" \
         "$(updateTangentError "$t/log.formFoam" median)" 1e-5
