@@ -228,17 +228,6 @@ tryCase "summary: an angle of three points" "Entry 'points' in .*solidSolution.*
 tryCase "summary: a maxDisplacement since a time the run never writes" "Entry 'since' in .*solidSolution.*no state of time 0.0123.*the end of a process step or a written time" \
     "sed -i 's/^summary$/summary\n{ e { type maxDisplacement; since 0.0123; } }\nsummaryOld/' system/solidSolution; sed -i '/^summaryOld/,/^}/d' system/solidSolution"
 
-# Triangular shells (MITC3+, the plate of shellPlateTriangles) against a
-# rigid tool: not available yet, said clearly (before 2026-11-27 the
-# tools' orientation check read a fourth corner of the triangles and
-# aborted)
-rm -rf "$base"
-base=$(mktemp -d "${TMPDIR:-/tmp}/formFoamTest.XXXXXX")
-cp -r "$formFoamTop/tests/cases/shellPlateTriangles/." "$base/"
-(cd "$base" && ./makeMesh > log.makeMesh 2>&1) || fail "makeMesh of shellPlateTriangles"
-tryCase "shells: a triangular shell's face in a rigid-tool pair" "Entry 'plateTool/patch' in .*contactProperties.*pair 'plateTool'.*patch 'top' is a face of triangular shell elements \\(MITC3\\+\\).*MITC4 or MITC4\\+" \
-    "printf 'FoamFile { version 2.0; format ascii; class dictionary; object contactProperties; }\ntools { lid { surface { type plane; point (0 0 0.1); normal (0 0 -1); } } }\npairs { plateTool { patch top; tool lid; } }\n' > constant/contactProperties"
-
 # Fluid: oil withdrawn beyond the cavity's volume (the piston, hydrostatic)
 newBase piston plug
 tryCase "fluid: more oil withdrawn than the cavity holds" "Entry 'injectedVolume' in .*constant/oil/fluidProperties.*withdraws all the fluid of cavity 'oil'" \

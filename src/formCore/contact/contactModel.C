@@ -390,23 +390,13 @@ void contactModel::setShells(const shellSet* shells)
             );
         }
         // The side of each node's director the patch covers: the patch's
-        // faces are the elements' mid-surface quadrilaterals ordered with
-        // the patch's outward normal
+        // faces are the elements' mid-surface quadrilaterals (MITC4,
+        // MITC4+) or triangles (MITC3+) ordered with the patch's outward
+        // normal
         std::map<int, int> side;
         for (const std::vector<int>& f : p.faces)
         {
-            if (f.size() == 3)
-            {
-                throw inputError
-                (
-                    spec.name + "/patch",
-                    "pair '" + spec.name + "': patch '" + spec.faceSet
-                  + "' is a face of triangular shell elements (MITC3+);"
-                    " contact of shells needs MITC4 or MITC4+ (triangles:"
-                    " not available yet)"
-                );
-            }
-            if (f.size() != 4)
+            if (f.size() != 4 && f.size() != 3)
             {
                 throw inputError
                 (
@@ -420,7 +410,9 @@ void contactModel::setShells(const shellSet* shells)
             {
                 return vec3(m.mesh->X.row(f[k]).transpose());
             };
-            const vec3 n = (X(2) - X(0)).cross(X(3) - X(1));
+            const vec3 n = f.size() == 4
+              ? vec3((X(2) - X(0)).cross(X(3) - X(1)))
+              : vec3((X(1) - X(0)).cross(X(2) - X(0)));
             for (const int node : f)
             {
                 const int s = n.dot(shells->initialDirector(node)) > 0 ? 1 : -1;
