@@ -85,6 +85,27 @@ public:
 };
 
 
+//- A profile's projection in the plane of the unit directions e (its
+//  first coordinate) and a (its second) as a surface's: n = [e a] n2,
+//  dn/dy = [e a] dn2/dy2 [e a]^T (the turn of e itself is the caller's)
+surfaceProjection lifted
+(
+    const profileProjection& q,
+    const vec3& e,
+    const vec3& a
+)
+{
+    Eigen::Matrix<double, 3, 2> Bm;
+    Bm.col(0) = e;
+    Bm.col(1) = a;
+    surfaceProjection P;
+    P.gap = q.gap;
+    P.normal = Bm*q.normal;
+    P.dNormalDY = Bm*q.dNormalDY*Bm.transpose();
+    return P;
+}
+
+
 class extrudedProfile : public rigidSurface
 {
     std::shared_ptr<rigidProfile> profile_;
@@ -181,13 +202,7 @@ public:
         const vec3 er = r > 1e-12*size ? vec3(radial/r) : e1_;
         const vec3 et = a_.cross(er);
         const profileProjection q = profile_->project(Eigen::Vector2d(r, z));
-        Eigen::Matrix<double, 3, 2> Bm;
-        Bm.col(0) = er;
-        Bm.col(1) = a_;
-        surfaceProjection P;
-        P.gap = q.gap;
-        P.normal = Bm*q.normal;
-        P.dNormalDY = Bm*q.dNormalDY*Bm.transpose();
+        surfaceProjection P = lifted(q, er, a_);
         // e_r turns about the axis where the core's closest point is a
         // corner (or the point core): de_r/dy = e_t e_t^T/r; along a side
         // it is constant. n_r/r has the limit dn_r/dr on the axis.
@@ -260,14 +275,8 @@ public:
         const vec3 m = -(E_*p.normal);
         const profileProjection q =
             profile_->project(Eigen::Vector2d(-p.gap, a_.dot(d)));
-        Eigen::Matrix<double, 3, 2> Bm;
-        Bm.col(0) = m;
-        Bm.col(1) = a_;
-        surfaceProjection P;
-        P.gap = q.gap;
-        P.normal = Bm*q.normal;
-        P.dNormalDY = Bm*q.dNormalDY*Bm.transpose()
-          - q.normal(0)*(E_*p.dNormalDY*E_.transpose());
+        surfaceProjection P = lifted(q, m, a_);
+        P.dNormalDY -= q.normal(0)*(E_*p.dNormalDY*E_.transpose());
         return P;
     }
 };
