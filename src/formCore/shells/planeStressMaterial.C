@@ -7,6 +7,7 @@ Description
 #include "planeStressMaterial.H"
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace form
 {
@@ -212,15 +213,24 @@ bool planeStressMaterial::stress
     // Converged at a residual of a strain error of 1e-15 at the
     // material's initial stiffness, or when the last correction was at
     // round-off: the answer must not depend on the start (below) beyond
-    // round-off, or the tangent's finite-difference checks see the start
+    // round-off, or the tangent's finite-difference checks see the start.
+    // S33(E33) increases: the iterates bracket the root, a Newton step
+    // that leaves the bracket is replaced by bisection, and a bracket of a
+    // few ulps is convergence at round-off. (Newton alone cycled there:
+    // the stress's round-off, 3e-10 at 500 MPa, exceeds tol, and each
+    // correction, 1.2e-15, just missed the step criterion; the S-rail's
+    // steps failed one iteration after convergence, 2026-11-27.)
     const double tol = 1e-15*(mat_->bulkModulus() + mat_->shearModulus());
+    const double inf = std::numeric_limits<double>::infinity();
+    const double machEps = std::numeric_limits<double>::epsilon();
     auto solve = [&](double E33)
     {
         E = localStrain(eps, E33);
-        double dE33 = 1;
-        for (int it = 0; it < 25; ++it)
+        double dE33 = 1, lo = -inf, hi = inf;
+        for (int it = 0; it < 60; ++it)
         {
             if (!response(Q, E, mc, mt, S6, C6)) return false;
+            const double roundOff = 8*machEps*(1 + std::abs(E(2)));
             if
             (
                 std::abs(S6(2)) <= tol
@@ -229,9 +239,17 @@ bool planeStressMaterial::stress
             {
                 return true;
             }
+            (S6(2) > 0 ? hi : lo) = E(2);
+            if (hi - lo <= roundOff) return true;
             if (!(C6(2, 2) > 0)) return false;
-            dE33 = -S6(2)/C6(2, 2);
-            E(2) += dE33;
+            double next = E(2) - S6(2)/C6(2, 2);
+            if (!(next > lo && next < hi))
+            {
+                if (!(std::isfinite(lo) && std::isfinite(hi))) return false;
+                next = 0.5*(lo + hi);
+            }
+            dE33 = next - E(2);
+            E(2) = next;
         }
         return false;
     };

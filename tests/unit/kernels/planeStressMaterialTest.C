@@ -23,6 +23,7 @@
 #include "kernelTestTools.H"
 #include "materialTestTools.H"
 #include <gtest/gtest.h>
+#include <vector>
 #include <cmath>
 #include <random>
 #include "../fdCheck.H"
@@ -216,6 +217,46 @@ vec5 uniaxial
 
 } // anonymous namespace
 
+
+TEST(planeStressMaterial, convergesAtRoundOffFromAConvergedStart)
+{
+    // A point of the S-rail tutorial (drawing steel, Hill'48) re-evaluated
+    // at its committed strain, recorded when the step failed (formFoam
+    // 2026-11-27): Newton on E33 from the committed E33 cycled between
+    // two neighbouring values, sigma_33 = +3.3e-10 and -3.1e-10, above
+    // the absolute tolerance 1e-15 (K + G) = 2.5e-10 (the stress's
+    // round-off at some 300 MPa), each correction (1.2e-15) just above
+    // the step criterion: "material update failed" one iteration after
+    // the step had converged. The iterates bracket the root; bisection
+    // ends it at round-off.
+    const materialInput h = hill(1.79, 1.51, 2.27);
+    const planeStressMaterial law
+    (
+        material::New("elastoPlastic", input(206000, 0.3, swift(565.32, 0.007117, 0.2589), &h))
+    );
+    mat3 Q;
+    Q << 0, -1, 5.5511151231257992e-18, 1, 0, -0.0, 0, 5.5511151231257992e-18, 1;
+    vec5 eps;
+    eps << 0.0026257664543645359, -0.0024111509669067178, -0.037177008653852421,
+        -0.0019965436260323201, 0.00037762164518357895;
+    materialState committed = law.initialState();
+    const std::vector<double> history
+    {
+        -0.0021330178019333887, 0.00083563241459352585, 0.0012973853873398619,
+        0.037084997679866769, -0.0017371961017470642, -0.00031789750231775009,
+        0.084165902619250735, 0, 0, 0, 0, 0, 0, 0.00095323659315160758
+    };
+    ASSERT_EQ(committed.history.size(), history.size());
+    for (std::size_t k = 0; k < history.size(); ++k) committed.history[k] = history[k];
+    materialState trial = committed;
+    vec5 S;
+    mat5 D;
+    ASSERT_TRUE(law.stress(Q, eps, committed, trial, S, D));
+    // the answer: the committed E33 to the round-off of the criteria, a
+    // finite stress
+    EXPECT_NEAR(trial.history(trial.history.size() - 1), history.back(), 2e-15);
+    EXPECT_TRUE(S.allFinite() && D.allFinite());
+}
 
 TEST(planeStressMaterial, uniaxialTensionFollowsTheHardeningCurve)
 {
