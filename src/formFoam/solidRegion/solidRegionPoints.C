@@ -14,7 +14,6 @@ Description
 #include "shellSet.H"
 #include "dictionaryChecks.H"
 #include "Function1.H"
-#include "pointLocator.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
@@ -245,16 +244,9 @@ Foam::scalar Foam::solidRegion::lineAngle
             const label n = nodeAt(p, dict);
             return (fe.X.row(n) + U.row(n)).transpose();
         }
-        const form::vecX X = feMesh_->toFe(p);
-        const form::pointLocation loc = form::locatePoint(fe, X, 1e-6);
-        if (!loc.found())
-        {
-            FatalIOErrorInFunction(dict)
-                << "Point " << p << " in " << dict.name()
-                << " lies outside the mesh of solid region '" << name_
-                << "'" << exit(FatalIOError);
-        }
-        return X + form::interpolate(fe, loc, U);
+        form::vecX x = feMesh_->toFe(p);
+        for (int c = 0; c < fe.nDim; ++c) x(c) += displacementAt(p, c, dict);
+        return x;
     };
     const form::vecX a = current(pts[1]) - current(pts[0]);
     const form::vecX b = current(pts[3]) - current(pts[2]);
