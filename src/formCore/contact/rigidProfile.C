@@ -28,6 +28,11 @@ const double reversalTol = 1e-9;
 //- Relative tolerance of the foot-inside-piece tests
 const double relTol = 1e-10;
 
+//- Relative tie of two distances (project): far from the tool, where only
+//  the constraint function's tail acts (contactModel.H), a point on the
+//  medial axis of two pieces keeps one of them
+const double medialTol = 1e-6;
+
 //- Outward normal of the unit tangent t: (t_y, -t_x)
 inline vec2 rightOf(const vec2& t)
 {
@@ -408,9 +413,19 @@ profileProjection rigidProfile::project(const Eigen::Vector2d& y) const
         // same point, where the piece's normal is the one-sided limit and
         // its gap signed: a point on the edge of an end point's normal
         // cone inside the tool, as every point over the core of a swept
-        // profile, has a negative gap), else the first
+        // profile, has a negative gap), else the first. Distances within
+        // medialTol of each other tie too: a point on the medial axis of
+        // two pieces (the middle of a die's channel) keeps the first of
+        // them while it wanders across the axis by round-off, instead of
+        // a normal that flips with the sign of the last bits (the
+        // S-rail's middle node, held on that axis by the part's symmetry,
+        // felt the die's far walls, 26 mm away, push it one way and the
+        // other in turn: a residual Newton could not remove, 2026-11-27).
+        // The gap taken is then longer by at most medialTol of itself
         const bool vertex = !pieces_[i].line && pieces_[i].R == 0;
-        const bool tie = std::abs(dist - bestDist) <= 1e-3*tol_;
+        const bool tie =
+            std::abs(dist - bestDist)
+         <= std::max(1e-3*tol_, medialTol*std::min(dist, bestDist));
         const bool better =
             best.piece < 0
          || (inside && !bestInside)

@@ -2,7 +2,8 @@
 // fillets, sharp vertices and end points of a U-channel die; central
 // differences of dgap/dy = n, dxi/dy and dn/dy at random points; arc-length
 // consistency, fillet lengths, tangent continuity, sampling and input
-// errors naming the vertex / radius.
+// errors naming the vertex / radius; a point on the medial axis of two
+// pieces keeps one of them.
 #include "rigidProfile.H"
 #include "formError.H"
 #include <gtest/gtest.h>
@@ -359,6 +360,41 @@ TEST(rigidProfile, sharpVertices)
     p = d.project(vec2(40.2, -49.5));
     EXPECT_EQ(p.piece, 3);
     EXPECT_NEAR(p.gap, -0.2, 1e-12);
+}
+
+
+TEST(rigidProfile, medialAxisKeepsOnePiece)
+{
+    // A die's channel, walls x = +-26, floor y = -60 (the S-rail's die in
+    // its (s, z) plane). A point on the channel's middle line is as far
+    // from both walls; wandering across it by round-off it must keep one
+    // wall (the first in the outline's order), or the far walls' tail
+    // force flips from side to side and Newton stalls at its size (the
+    // S-rail's middle node, 2026-11-27). Away from the middle line by
+    // more than 1e-6 of the distance the nearer wall wins.
+    const rigidProfile c
+    (
+        {{200, 0}, {26, 0}, {26, -60}, {-26, -60}, {-26, 0}, {-200, 0}},
+        {8, 5, 5, 8}
+    );
+    const profileProjection mid = c.project(vec2(0, -11));
+    const vec2 right(-1, 0);        // the wall x = 26, first in the outline
+    expectNear(mid.normal, right, 1e-15, "middle: the first wall");
+    EXPECT_EQ(mid.gap, 26);
+    for (const double e : {-1e-6, -1e-9, -1e-14, 1e-14, 1e-9, 1e-6})
+    {
+        const profileProjection p = c.project(vec2(e, -11));
+        EXPECT_EQ(p.piece, mid.piece) << "x = " << e;
+        expectNear(p.normal, right, 1e-15, "near the middle: the same wall");
+        // the gap of the wall kept: longer than the distance by 2|e| at most
+        EXPECT_NEAR(p.gap, 26 - e, 1e-12) << "x = " << e;
+    }
+    for (const double e : {-1e-3, 1e-3})
+    {
+        const profileProjection p = c.project(vec2(e, -11));
+        EXPECT_NEAR(p.gap, 26 - std::abs(e), 1e-12) << "x = " << e;
+        expectNear(p.normal, vec2(e > 0 ? -1 : 1, 0), 1e-15, "off the middle: the nearer wall");
+    }
 }
 
 
