@@ -52,7 +52,7 @@ then
     checkClose "S-rail point symmetry: the flange edges at the middle of the S draw in alike" \
         "$(summary drawInMiddleLeft)" "$(summary drawInMiddleRight)" 1e-8
     checkBelow "S-rail: cutbacks in the springback step (t > 1)" \
-        "$(awk '/^Step .*deltaT =/ { t = $4 } /cutting back/ && t > 1 { n++ } END { print n + 0 }' \
+        "$(awk '/^Step .*deltaT =/ { t = $5 + 0 } /cutting back/ && t > 1 { n++ } END { print n + 0 }' \
            "$c/log.formFoam")" 1
     checkBelow "S-rail: after springback (t = 2) the released punch carries no force (N)" \
         "$(awk 'NR == 1 { for (i = 2; i <= NF; i++) if ($i == "punchForceMax") k = i - 1; next }
