@@ -329,6 +329,14 @@ bool mitc3::integrate
             tieB[it][p] = at(tie_[p][0], tie_[p][1], zt_[it], nodes, bubble);
         }
     }
+    // The transverse shear strains' second derivatives live at the tying
+    // bases (one set per point through the thickness): their weights are
+    // summed over the in-plane points and added once per tying point
+    // (d2P is linear in its weight), 60 products instead of 420
+    std::vector<Eigen::Matrix<double, 2, 6>> tieWeight
+    (
+        K ? nThickness_ : 0, Eigen::Matrix<double, 2, 6>::Zero()
+    );
     int q = 0;
     for (const quadraturePoint2D& pt : plane)
     {
@@ -368,9 +376,17 @@ bool mitc3::integrate
             for (int j = 0; j < 2; ++j)
             {
                 const int col = 2*p + j;
-                const double wp = Wsh(0, col)*m(3) + Wsh(1, col)*m(4);
-                addSecond(tieB[it][p], j, 2, wp, nodes, bubble, *K);
+                tieWeight[it](j, p) += Wsh(0, col)*m(3) + Wsh(1, col)*m(4);
             }
+        }
+    }
+    if (K)
+    {
+        for (int it = 0; it < nThickness_; ++it)
+        for (int p = 0; p < 6; ++p)
+        for (int j = 0; j < 2; ++j)
+        {
+            addSecond(tieB[it][p], j, 2, tieWeight[it](j, p), nodes, bubble, *K);
         }
     }
     return true;
