@@ -155,6 +155,16 @@ double swiftHardening::slope(double epsP) const
 }
 
 
+double swiftHardening::flowStress(double epsP, double& slope) const
+{
+    // slope = n sigmaY/(eps0 + epsP) = K n (eps0 + epsP)^(n-1)
+    const double x = eps0_ + epsP;
+    const double s = K_*std::pow(x, n_);
+    slope = n_*s/x;
+    return s;
+}
+
+
 std::string swiftHardening::summary() const
 {
     return "swift: sigmaY = K (eps0 + epsP)^n, K = " + formatNumber(K_)

@@ -8,6 +8,7 @@ Description
 \*---------------------------------------------------------------------------*/
 #include "logStrain.H"
 #include "formError.H"
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -76,15 +77,22 @@ double secondDividedDifferenceSorted
     //   h_k(u0)         = u0^k
     //   h_k(u0, u1)     = h_k(u0) + u1 h_(k-1)(u0, u1)
     //   h_k(u0, u1, u2) = h_k(u0, u1) + u2 h_(k-1)(u0, u1, u2)
+    // The sum stops at the first term n whose successor's bound,
+    // |h_(n-1)|/(n+1) <= n/2 U^(n-1) with U = max |u_i|, is below 1e-20
+    // (the sum is about -1/2): all 20 terms at w = 0.1, 8 at w = 1e-3.
     const double u0 = (a - m)/m, u1 = (b - m)/m, u2 = (c - m)/m;
+    const double U = std::max(std::abs(u0), std::max(std::abs(u1), std::abs(u2)));
     double h1 = 1, h2 = 1, h3 = 1;      // degree 0
     double sum = -0.5;                  // n = 2: (-1)^1/2 h_0
+    double power = U;                   // U^(n-1) after term n
     for (int n = 3; n <= nSeries; ++n)
     {
         h1 *= u0;
         h2 = h1 + u1*h2;
         h3 = h2 + u2*h3;
         sum += (n % 2 ? 1.0 : -1.0)/n*h3;
+        power *= U;
+        if (0.5*n*power < 1e-20) break;
     }
     return sum/(2*m*m);
 }

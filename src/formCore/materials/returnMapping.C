@@ -278,12 +278,13 @@ bool plasticity::update
     //     n.xiHat = phi (1 + t q),   q = n.S.n,   t sigmaY = dgamma h,
     // so gs = n.xiHat - sigmaY - dgamma h q, evaluated in this form (no
     // cancellation against the large trial stress).
+    // sy, Hp: sigmaY and its slope at the last iterate
+    double sy = syN, Hp = 0;
     auto evaluate = [&](double dgamma, vec6& xi, double& gs, double& dgs)
     {
         const double a = 1/(1 + gamma_*dgamma);
         const double h = 2*G_ + 2.0/3*C_*a;
-        const double sy = hardening_->sigmaY(epsPn + dgamma);
-        const double Hp = hardening_->slope(epsPn + dgamma);
+        sy = hardening_->flowStress(epsPn + dgamma, Hp);
         const vec6 xiHat = sTr - a*betaN;
         const double t = dgamma*h/sy;
         Eigen::LDLT<mat6> K;
@@ -329,7 +330,6 @@ bool plasticity::update
         }
         x = xNew;
         if (!evaluate(x, xi, gs, dgs)) return false;
-        const double sy = hardening_->sigmaY(epsPn + x);
         if (std::abs(gs) <= tolYield*sy)
         {
             converged = true;
@@ -374,7 +374,7 @@ bool plasticity::update
     J.topRightCorner<6, 1>() =
         (-gamma_*a*a*betaN + (2*G_ + 2.0/3*C_*a*a)*Sn)/(2*G_);
     J.bottomLeftCorner<1, 6>() = n.transpose();
-    J(6, 6) = -hardening_->slope(epsPn + dgamma)/(2*G_);
+    J(6, 6) = -Hp/(2*G_);                  // at the last iterate, dgamma
     mat76 rhs = mat76::Zero();
     rhs.topRows<6>().setIdentity();
     const mat76 X = J.partialPivLu().solve(rhs);

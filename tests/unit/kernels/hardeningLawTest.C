@@ -103,11 +103,18 @@ TEST(hardeningLaw, swiftClosedFormAndSlope)
     {
         const double h = 1e-6*(0.01 + e);
         EXPECT_TRUE(test::fdError("hardening swift slope", std::abs(law->slope(e) - fdSlope(*law, e, h))/std::abs(law->slope(e)), fdTolSwift)) << "epsP " << e;
+        // flowStress: both at once (one power), the same values
+        double slope = 0;
+        EXPECT_DOUBLE_EQ(law->flowStress(e, slope), law->sigmaY(e)) << e;
+        EXPECT_NEAR(slope, law->slope(e), 1e-14*law->slope(e)) << e;
     }
     // n = 0: perfect plasticity at K
     const swiftHardening flat(300, 0.1, 0);
     EXPECT_DOUBLE_EQ(flat.sigmaY(0.5), 300);
     EXPECT_DOUBLE_EQ(flat.slope(0.5), 0);
+    double flatSlope = 1;
+    EXPECT_DOUBLE_EQ(flat.flowStress(0.5, flatSlope), 300);
+    EXPECT_EQ(flatSlope, 0);
 }
 
 TEST(hardeningLaw, voceClosedFormAndSlope)
