@@ -6,9 +6,7 @@ Description
     sheet metal with logarithmic (Hencky) strains.
 \*---------------------------------------------------------------------------*/
 #include "elastoPlastic.H"
-#include "logStrain.H"
 #include <cmath>
-#include <optional>
 
 namespace form
 {
@@ -56,26 +54,23 @@ materialState elastoPlastic::initialState() const
 }
 
 
-bool elastoPlastic::deviatoric
+bool elastoPlastic::logSpaceUpdate
 (
-    const mat3& F,
+    const mat3& C,
     const materialState& committed,
     materialState& trial,
-    mat3& tauDev,
-    mat6& cDev
+    std::optional<logStrainMap>& map,
+    mat3& T,
+    mat6& A
 ) const
 {
     trial = committed;
-    if (!(F.determinant() > 0) || !F.allFinite()) return false;
-
     plasticState state;
     state.epsP = committed.history(6);
     state.backStress = committed.history.segment<6>(7);
 
     // Lagrangian logarithmic strain and the trial elastic strain (one
     // spectral decomposition of C serves E, the stress and the tangent)
-    const mat3 C = F.transpose()*F;
-    std::optional<logStrainMap> map;
     try
     {
         map.emplace(C);
@@ -89,7 +84,6 @@ bool elastoPlastic::deviatoric
     // Small-strain return mapping in log space (deviatoric)
     plasticState newState;
     vec6 Tv, dEp;
-    mat6 A;
     if
     (
         !plasticity_.update
@@ -100,7 +94,35 @@ bool elastoPlastic::deviatoric
     {
         return false;
     }
-    const mat3 T = fromVoigtStress(Tv);
+    T = fromVoigtStress(Tv);
+    trial.history.segment<6>(0) = EpN + dEp;
+    trial.history(6) = newState.epsP;
+    trial.history.segment<6>(7) = newState.backStress;
+    return true;
+}
+
+
+bool elastoPlastic::deviatoric
+(
+    const mat3& F,
+    const materialState& committed,
+    materialState& trial,
+    mat3& tauDev,
+    mat6& cDev
+) const
+{
+    if (!(F.determinant() > 0) || !F.allFinite())
+    {
+        trial = committed;
+        return false;
+    }
+    std::optional<logStrainMap> map;
+    mat3 T;
+    mat6 A;
+    if (!logSpaceUpdate(F.transpose()*F, committed, trial, map, T, A))
+    {
+        return false;
+    }
 
     // Stress: S = T : P, tau = F S F^T
     tauDev = F*map->stress(T)*F.transpose();
@@ -110,11 +132,39 @@ bool elastoPlastic::deviatoric
     // Tangent: push-forward of P : A : P + T : L
     const mat6 R = voigtTransform(F);
     cDev = R*map->tangent(A, T)*R.transpose();
-
-    trial.history.segment<6>(0) = EpN + dEp;
-    trial.history(6) = newState.epsP;
-    trial.history.segment<6>(7) = newState.backStress;
     return true;
+}
+
+
+bool elastoPlastic::secondPiola
+(
+    const mat3& C,
+    const materialState& committed,
+    materialState& trial,
+    mat3& S,
+    mat6& CC
+) const
+{
+    if (!C.allFinite())
+    {
+        trial = committed;
+        return false;
+    }
+    std::optional<logStrainMap> map;
+    mat3 T;
+    mat6 A;
+    if (!logSpaceUpdate(C, committed, trial, map, T, A)) return false;
+
+    // Volumetric: U = kappa/2 (tr E)^2 (tr E = ln J): T_vol = kappa tr(E) 1,
+    // dT_vol/dE = kappa 1 (x) 1
+    const double kappa = bulkModulus();
+    const double p = kappa*map->strain().trace();
+    T.diagonal().array() += p;
+    const vec6 m = (vec6() << 1, 1, 1, 0, 0, 0).finished();
+    A += kappa*m*m.transpose();
+    S = map->stress(T);
+    CC = map->tangent(A, T);
+    return S.allFinite() && CC.allFinite();
 }
 
 

@@ -120,6 +120,40 @@ std::unique_ptr<material> material::New
 }
 
 
+bool material::secondPiola
+(
+    const mat3& C,
+    const materialState& committed,
+    materialState& trial,
+    mat3& S,
+    mat6& CC
+) const
+{
+    if (!C.allFinite()) return false;
+    const Eigen::LLT<mat3> llt(C);
+    if (llt.info() != Eigen::Success) return false;
+    const mat3 F = llt.matrixU();           // F^T F = C
+    const double J = F.determinant();
+    if (!(J > 0)) return false;
+    mat3 tau;
+    mat6 c;
+    if (!deviatoric(F, committed, trial, tau, c)) return false;
+    const double kappa = bulkModulus();
+    const double p = kappa*std::log(J);
+    const vec6 m = (vec6() << 1, 1, 1, 0, 0, 0).finished();
+    const vec6 iSym = (vec6() << 1, 1, 1, 0.5, 0.5, 0.5).finished();
+    tau.diagonal().array() += p;
+    c += kappa*m*m.transpose();
+    c.diagonal() -= 2*p*iSym;
+    const mat3 A = F.inverse();
+    S = A*tau*A.transpose();
+    S = 0.5*(S + S.transpose());
+    const mat6 R = voigtTransform(A);
+    CC = R*c*R.transpose();
+    return S.allFinite() && CC.allFinite();
+}
+
+
 materialState material::initialState() const
 {
     materialState s;

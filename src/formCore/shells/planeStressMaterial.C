@@ -64,7 +64,7 @@ planeStressMaterial::planeStressMaterial
 materialState planeStressMaterial::initialState() const
 {
     materialState s;
-    s.history = vecX::Zero(nHistory_ + 1);
+    s.history = vecX::Zero(nHistory_ + nPredictor + 1);
     s.history.head(nHistory_) = mat_->initialState().history;
     return s;
 }
@@ -88,43 +88,46 @@ bool planeStressMaterial::response
     mat6& C
 ) const
 {
-    const double kappa = mat_->bulkModulus();
-    const vec6 m = (vec6() << 1, 1, 1, 0, 0, 0).finished();
     const mat3 El = fromVoigtStrain(E);
-    mat3 F, A;
-    double p;
-    const bool linear = mat_->geometricallyLinear();
-    if (linear)
+    mat3 Sl;
+    if (mat_->geometricallyLinear())
     {
-        F = mat3::Identity() + Q*El*Q.transpose();
-        A = Q.transpose();
-        p = kappa*El.trace();
+        // F = I + Q E Q^T, S = Q^T sigma Q (small strain)
+        const double kappa = mat_->bulkModulus();
+        const vec6 m = (vec6() << 1, 1, 1, 0, 0, 0).finished();
+        const mat3 F = mat3::Identity() + Q*El*Q.transpose();
+        mat3 tau;
+        mat6 c;
+        if (!mat_->deviatoric(F, committed, trial, tau, c)) return false;
+        tau.diagonal().array() += kappa*El.trace();
+        c += kappa*m*m.transpose();
+        Sl = Q.transpose()*tau*Q;
+        const mat6 R = voigtTransform(Q.transpose());
+        C = R*c*R.transpose();
     }
     else
     {
-        const Eigen::LLT<mat3> llt(mat3::Identity() + 2*El);
-        if (llt.info() != Eigen::Success) return false;
-        const mat3 Fl = llt.matrixU();      // Fl^T Fl = C
-        const double J = Fl.determinant();
-        if (!(J > 0)) return false;
-        F = Q*Fl*Q.transpose();
-        A = Fl.inverse()*Q.transpose();
-        p = kappa*std::log(J);
+        // The response at C = Q (I + 2 E) Q^T in global coordinates,
+        // rotated into the lamina frame (false if C is not positive
+        // definite: material.H)
+        const mat3 Cl = mat3::Identity() + 2*El;
+        mat3 Sg;
+        mat6 CCg;
+        if
+        (
+            !mat_->secondPiola
+            (
+                Q*Cl*Q.transpose(), committed, trial, Sg, CCg
+            )
+        )
+        {
+            return false;
+        }
+        Sl = Q.transpose()*Sg*Q;
+        const mat6 R = voigtTransform(Q.transpose());
+        C = R*CCg*R.transpose();
     }
-    mat3 tau;
-    mat6 c;
-    if (!mat_->deviatoric(F, committed, trial, tau, c)) return false;
-    tau.diagonal().array() += p;
-    c += kappa*m*m.transpose();
-    if (!linear)
-    {
-        const vec6 iSym = (vec6() << 1, 1, 1, 0.5, 0.5, 0.5).finished();
-        c.diagonal() -= 2*p*iSym;
-    }
-    const mat3 Sl = A*tau*A.transpose();
     for (int a = 0; a < 6; ++a) S(a) = Sl(voigtI[a], voigtJ[a]);
-    const mat6 R = voigtTransform(A);
-    C = R*c*R.transpose();
     return S.allFinite() && C.allFinite();
 }
 
@@ -185,6 +188,22 @@ planeStressMaterial::pointOutput planeStressMaterial::output
 }
 
 
+double planeStressMaterial::predictedThicknessStrain
+(
+    const materialState& s,
+    const vec5& eps
+) const
+{
+    const vecX& h = s.history;
+    double E33 = h(nHistory_ + nPredictor);
+    for (int b = 0; b < 5; ++b)
+    {
+        E33 += h(nHistory_ + 5 + b)*(eps(b) - h(nHistory_ + b));
+    }
+    return E33;
+}
+
+
 bool planeStressMaterial::stress
 (
     const mat3& Q,
@@ -195,13 +214,28 @@ bool planeStressMaterial::stress
     mat5& D
 ) const
 {
-    if (committed.history.size() != nHistory_ + 1)
+    return stress(Q, eps, committed, trial, S, D, nullptr);
+}
+
+
+bool planeStressMaterial::stress
+(
+    const mat3& Q,
+    const vec5& eps,
+    const materialState& committed,
+    materialState& trial,
+    vec5& S,
+    mat5& D,
+    int* evaluations
+) const
+{
+    if (committed.history.size() != nHistory_ + nPredictor + 1)
     {
         throw numericalError
         (
             "planeStressMaterial: a state with "
           + std::to_string(committed.history.size()) + " entries, expected "
-          + std::to_string(nHistory_ + 1)
+          + std::to_string(nHistory_ + nPredictor + 1)
         );
     }
     const double rk = std::sqrt(kappa_);
@@ -220,15 +254,19 @@ bool planeStressMaterial::stress
     // the stress's round-off, 3e-10 at 500 MPa, exceeds tol, and each
     // correction, 1.2e-15, just missed the step criterion; the S-rail's
     // steps failed one iteration after convergence, 2026-11-27.)
+    // An evaluation whose Newton correction is below linearTol is
+    // accepted with the correction applied to first order (header).
     const double tol = 1e-15*(mat_->bulkModulus() + mat_->shearModulus());
     const double inf = std::numeric_limits<double>::infinity();
     const double machEps = std::numeric_limits<double>::epsilon();
+    int count = 0;
     auto solve = [&](double E33)
     {
         E = localStrain(eps, E33);
         double dE33 = 1, lo = -inf, hi = inf;
         for (int it = 0; it < 60; ++it)
         {
+            ++count;
             if (!response(Q, E, mc, mt, S6, C6)) return false;
             const double roundOff = 8*machEps*(1 + std::abs(E(2)));
             if
@@ -237,6 +275,19 @@ bool planeStressMaterial::stress
              || std::abs(dE33) <= 1e-15*(1 + std::abs(E(2)))
             )
             {
+                return true;
+            }
+            if
+            (
+                C6(2, 2) > 0
+             && std::abs(S6(2)) <= linearTol*C6(2, 2)*(1 + std::abs(E(2)))
+            )
+            {
+                // The last Newton correction to first order: its
+                // remainder, C33' dE33^2/2, is below round-off
+                const double d = -S6(2)/C6(2, 2);
+                S6 += d*C6.col(2);
+                E(2) += d;
                 return true;
             }
             (S6(2) > 0 ? hi : lo) = E(2);
@@ -253,21 +304,35 @@ bool planeStressMaterial::stress
         }
         return false;
     };
-    // Start from the trial state's E33 where it has one (the previous
-    // Newton iteration's, close to the answer once the global iteration
-    // converges: one or two evaluations instead of three), else from the
-    // committed state's; a failure from the trial start is retried from
-    // the committed one, so the start never decides failure
+    // Starts: the thickness strain predicted from a state's stored strain
+    // and slope, E33 + dE33/deps . (eps - eps_s), first from the trial
+    // state (the previous Newton iteration's: its answer to second order
+    // in the change of the strains, one evaluation once the global
+    // iteration converges), then from the committed state; a failure is
+    // retried from the next start and finally from the committed E33
+    // itself, so the start never decides failure
+    auto admissible = [](double E33)
+    {
+        return std::isfinite(E33) && 1 + 2*E33 > 0;
+    };
     const double E33c = thicknessStrain(committed);
+    const double E33cp = predictedThicknessStrain(committed, eps);
     const bool fromTrial =
-        trial.history.size() == nHistory_ + 1
-     && std::isfinite(thicknessStrain(trial))
-     && 1 + 2*thicknessStrain(trial) > 0
+        trial.history.size() == nHistory_ + nPredictor + 1
+     && admissible(thicknessStrain(trial))
      && thicknessStrain(trial) != E33c;
-    if (!(fromTrial && solve(thicknessStrain(trial))) && !solve(E33c))
+    const double E33tp =
+        fromTrial ? predictedThicknessStrain(trial, eps) : E33cp;
+    if
+    (
+        !(fromTrial && admissible(E33tp) && solve(E33tp))
+     && !(admissible(E33cp) && solve(E33cp))
+     && !(E33cp != E33c && solve(E33c))
+    )
     {
         return false;
     }
+    if (evaluations) *evaluations = count;
 
     for (int a = 0; a < 5; ++a)
     {
@@ -279,9 +344,17 @@ bool planeStressMaterial::stress
             D(a, b) = scale[a]*scale[b]*(C6(i, j) - C6(i, 2)*C6(2, j)/C6(2, 2));
         }
     }
-    trial.history.resize(nHistory_ + 1);
+    trial.history.resize(nHistory_ + nPredictor + 1);
     trial.history.head(nHistory_) = mt.history;
-    trial.history(nHistory_) = E(2);
+    // The predictor's data: this strain and dE33/deps (the condensation's
+    // row: dS33 = C_3b deps_b + C_33 dE33 = 0)
+    for (int b = 0; b < 5; ++b)
+    {
+        const int j = shellIndex[b];
+        trial.history(nHistory_ + b) = eps(b);
+        trial.history(nHistory_ + 5 + b) = -scale[b]*C6(2, j)/C6(2, 2);
+    }
+    trial.history(nHistory_ + nPredictor) = E(2);
     return true;
 }
 

@@ -10,7 +10,10 @@
 //   closed form, Bauschinger effect;
 // - objectivity: rotating a plastically deformed point by 90 degrees in
 //   large steps keeps the invariants and rotates the stress;
-// - small strains: agrees with the small-strain kernel.
+// - small strains: agrees with the small-strain kernel;
+// - secondPiola (S and dS/dE formed in log space, the shells' path):
+//   the pulled-back response of the default path, and central
+//   differences of S.
 // The homogeneous driver solves the lateral stretches for zero lateral
 // Kirchhoff stress (tau = tau_dev + kappa ln J I) by Newton with a
 // finite-difference Jacobian.
@@ -20,6 +23,7 @@
 #include "materialTestTools.H"
 #include <gtest/gtest.h>
 #include <cmath>
+#include <random>
 #include "../fdCheck.H"
 
 // Finite-difference tolerances (fdCheck.H: about 10 x the largest error
@@ -243,6 +247,69 @@ TEST(elastoPlastic, spatialTangentMatchesFiniteDifferences)
             const mat6 cFD = test::fdSpatialTangent(tauOf, F2, 1e-6);
             EXPECT_TRUE(test::fdError("elastoPlastic spatial tangent", test::relErr(c, cFD), fdTolElastoPlastic)) << cd.name << "\n" << c
                 << "\nFD\n" << cFD;
+        }
+    }
+}
+
+
+TEST(elastoPlastic, secondPiolaInLogSpaceIsThePulledBackResponse)
+{
+    // elastoPlastic::secondPiola forms S and dS/dE in log space (the
+    // volumetric part through the map); material::secondPiola, the
+    // default, pulls tau_dev + kappa ln J I and c back with F^-1: the two
+    // agree to round-off, the history too, and dS/dE matches central
+    // differences of S in the Green-Lagrange strain
+    materialInput yh = hill(2.1, 1.6, 2.7);
+    materialInput ka = kinematic("armstrongFrederick", 20000, 50);
+    const std::vector<materialInput> inputs
+    {
+        input(200e3, 0.3, swift(565, 0.007, 0.26)),
+        input(200e3, 0.3, swift(565, 0.007, 0.26), &yh),
+        input(200e3, 0.3, voce(300, 500, 10, 100), &yh, &ka)
+    };
+    std::mt19937 rng(23);
+    for (const materialInput& in : inputs)
+    {
+        const auto m = material::New("elastoPlastic", in);
+        for (int k = 0; k < 3; ++k)
+        {
+            materialState s0 = m->initialState(), committed;
+            mat3 tau;
+            mat6 c;
+            const mat3 F1 = test::randomF(rng);
+            ASSERT_TRUE(m->deviatoric(F1, s0, committed, tau, c));
+            const mat3 F2 = (mat3::Identity() + 0.05*test::randomSym(rng))*F1;
+            const mat3 C = F2.transpose()*F2;
+            materialState t1, t2;
+            mat3 S1, S2;
+            mat6 CC1, CC2;
+            ASSERT_TRUE(m->secondPiola(C, committed, t1, S1, CC1));
+            ASSERT_TRUE(m->material::secondPiola(C, committed, t2, S2, CC2));
+            EXPECT_LT((S1 - S2).norm(), 1e-12*S2.norm());
+            EXPECT_LT((CC1 - CC2).norm(), 1e-12*CC2.norm());
+            // (the default path sees C through its Cholesky factor:
+            // round-off in C, 1e-15 relative in the history)
+            EXPECT_LT((t1.history - t2.history).norm(), 1e-13*(1 + t2.history.norm()));
+            // dS/dE: column b from S(C + 2 h dE_b), dE_b the unit
+            // engineering strain b
+            const double h = 1e-6;
+            mat6 fd;
+            for (int b = 0; b < 6; ++b)
+            {
+                mat3 dE = mat3::Zero();
+                const int i = voigtI[b], j = voigtJ[b];
+                dE(i, j) = dE(j, i) = i == j ? 1 : 0.5;
+                materialState tp, tm;
+                mat3 Sp, Sm;
+                mat6 unused;
+                ASSERT_TRUE(m->secondPiola(C + 2*h*dE, committed, tp, Sp, unused));
+                ASSERT_TRUE(m->secondPiola(C - 2*h*dE, committed, tm, Sm, unused));
+                for (int a = 0; a < 6; ++a)
+                {
+                    fd(a, b) = (Sp(voigtI[a], voigtJ[a]) - Sm(voigtI[a], voigtJ[a]))/(2*h);
+                }
+            }
+            EXPECT_TRUE(test::fdError("elastoPlastic material tangent dS/dE", test::relErr(CC1, fd), fdTolElastoPlastic));
         }
     }
 }
