@@ -194,12 +194,11 @@ double planeStressMaterial::predictedThicknessStrain
     const vec5& eps
 ) const
 {
+    // E33_s + dE33/deps . (eps - eps_s), stored as the slopes and
+    // -dE33/deps . eps_s (zero data: E33_s itself)
     const vecX& h = s.history;
-    double E33 = h(nHistory_ + nPredictor);
-    for (int b = 0; b < 5; ++b)
-    {
-        E33 += h(nHistory_ + 5 + b)*(eps(b) - h(nHistory_ + b));
-    }
+    double E33 = h(nHistory_ + nPredictor) + h(nHistory_ + 5);
+    for (int b = 0; b < 5; ++b) E33 += h(nHistory_ + b)*eps(b);
     return E33;
 }
 
@@ -346,14 +345,17 @@ bool planeStressMaterial::stress
     }
     trial.history.resize(nHistory_ + nPredictor + 1);
     trial.history.head(nHistory_) = mt.history;
-    // The predictor's data: this strain and dE33/deps (the condensation's
-    // row: dS33 = C_3b deps_b + C_33 dE33 = 0)
+    // The predictor's data: dE33/deps (the condensation's row:
+    // dS33 = C_3b deps_b + C_33 dE33 = 0) and -dE33/deps . eps
+    double offset = 0;
     for (int b = 0; b < 5; ++b)
     {
         const int j = shellIndex[b];
-        trial.history(nHistory_ + b) = eps(b);
-        trial.history(nHistory_ + 5 + b) = -scale[b]*C6(2, j)/C6(2, 2);
+        const double slope = -scale[b]*C6(2, j)/C6(2, 2);
+        trial.history(nHistory_ + b) = slope;
+        offset -= slope*eps(b);
     }
+    trial.history(nHistory_ + 5) = offset;
     trial.history(nHistory_ + nPredictor) = E(2);
     return true;
 }

@@ -296,7 +296,7 @@ TEST(planeStressMaterial, predictedStartTakesOneEvaluationNearConvergence)
         mat5 D, Dc;
         ASSERT_TRUE(law.stress(Q, eps0, law.initialState(), committed, S, D));
         materialState cold = committed;       // no predictor data
-        cold.history.segment(n, 10).setZero();
+        cold.history.segment(n, 6).setZero();
         materialState trial = committed;
         int last = 0;
         for (double d : {1e-2, 1e-3, 1e-5, 1e-7, 1e-9, 1e-12})
