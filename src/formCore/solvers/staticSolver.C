@@ -461,10 +461,11 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     char line[160];
     std::snprintf
     (
-        line, sizeof(line), "    iter %2d  |r| %.3e  |dU_p| %.3e%s\n",
+        line, sizeof(line), "    iter %2d  |r| %.3e  |dU_p| %.3e%s",
         0, r0, dUp.norm(), predicted ? "  predicted" : ""
     );
-    log_<< line;
+    // Where the start state is out of balance (per block, largest entry)
+    log_<< line << model_.iterationNote(r) << '\n';
 
     // A step may start in equilibrium: a linear response reached by the
     // predictor, a steady stretch of a forming process, or a step with
