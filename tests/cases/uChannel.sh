@@ -36,18 +36,26 @@
 #    along the blank): its middle section (z = 0, a symmetry plane)
 #    against the plane-strain strip of 4, the same build and mesh. Under
 #    load the middle of a 35 mm strip bent over R/t = 6.4 is in plane
-#    strain (the free edge's layer is about sqrt(R t) = 2 mm wide): the
-#    formed angles within 0.05 deg (observed 0.002 and 0.0006 deg). The
-#    released angles within 0.65 deg: the difference of two runs' step
-#    sequences, 0.4 deg (the shells README, item 5), plus the width's
-#    discretisation, 0.25 deg (3 against 6 elements across: theta2 89.56
-#    against 89.81; theta1 0.02 deg); observed 0.12 and 0.16 deg. The wall
+#    strain (the free edge's layer is about sqrt(R t) = 2 mm wide; the
+#    shells README's study: within 0.03 deg, 0.011 with 6 elements
+#    across). The two runs take different step sequences, and every
+#    number below scatters with the step sequence: the strip alone,
+#    rerun with the first deltaT 0.009, 0.01 and 0.011 and with the
+#    contact predictor of 2026-11-28, gave theta1Formed 90.48-90.67,
+#    released theta1 91.49-92.23 and the thinnest element 0.7638-0.7728
+#    mm (shells README, "A straight hat section"). Bounds: the formed
+#    angles within 0.25 deg (that scatter, 0.18, plus the width's 0.03;
+#    observed 0.002 and 0.0006 deg on 2026-11-27, 0.095 and 0.007 with
+#    the contact predictor). The released angles within 1.0 deg: the
+#    step scatter, 0.74 deg, plus the width's discretisation, 0.25 deg
+#    (3 against 6 elements across: theta2 89.56 against 89.81; theta1
+#    0.02 deg); observed 0.12 and 0.16 deg, then 0.43 and 0.13. The wall
 #    curvature 1/rho within 1e-3 per mm: the step scatter of this nearly
 #    straight wall, 5.6e-4 per mm per halving of the step (../../
 #    tutorials/numisheet93UChannel/README.md), plus the free edge's own
 #    effect, 3.8e-4 per mm with 6 elements across; observed 3.5e-4. The
-#    thinnest element within 1 % (observed 0.05 %). README of the shells
-#    case: "A straight hat section".
+#    thinnest element within 2 % (its step scatter 1.2 %; observed
+#    0.05 %). README of the shells case: "A straight hat section".
 # Chattering detection is tested at kernel level (formKernelTests,
 # contactModel.chatteringIsReported) and shows in the U-channel logs as
 # cut-back steps naming the node.
@@ -217,16 +225,16 @@ then
         "$(value "$h" wallTime) s"
     for q in theta1Formed theta2Formed; do
         checkBelow "U-channel hat section: |$q - the strip's| (deg, under load)" \
-            "$(calc 'abs(v - r)' v="$(value "$h" $q)" r="$(value "$strip" $q)")" 0.05
+            "$(calc 'abs(v - r)' v="$(value "$h" $q)" r="$(value "$strip" $q)")" 0.25
     done
     for q in theta1 theta2; do
         checkBelow "U-channel hat section: |$q - the strip's| (deg, released)" \
-            "$(calc 'abs(v - r)' v="$(value "$h" $q)" r="$(value "$strip" $q)")" 0.65
+            "$(calc 'abs(v - r)' v="$(value "$h" $q)" r="$(value "$strip" $q)")" 1.0
     done
     checkBelow "U-channel hat section: |1/rho - the strip's| (1/mm)" \
         "$(calc 'abs(1/v - 1/r)' v="$(value "$h" rho)" r="$(value "$strip" rho)")" 1e-3
     checkClose "U-channel hat section: thicknessMin vs the strip's" \
-        "$(value "$h" thicknessMin)" "$(value "$strip" thicknessMin)" 0.01
+        "$(value "$h" thicknessMin)" "$(value "$strip" thicknessMin)" 0.02
 else
     fail "U-channel hat section run (see $h/log.formFoam)"
     tail -15 "$h/log.formFoam" | sed 's/^/    | /'

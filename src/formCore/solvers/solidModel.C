@@ -748,6 +748,23 @@ void solidModel::addToState(const vecX& d)
 }
 
 
+void solidModel::keepCommitted(vecX& d, const vecX& previous) const
+{
+    const impl& m = *impl_;
+    int offset = m.nDofs();
+    for (const auto& b : m.coupled)
+    {
+        vecX s = d.segment(offset, b->nUnknowns());
+        const vecX p =
+            previous.size() == d.size()
+          ? vecX(previous.segment(offset, b->nUnknowns())) : vecX();
+        b->keepCommitted(s, p);
+        d.segment(offset, b->nUnknowns()) = s;
+        offset += b->nUnknowns();
+    }
+}
+
+
 const sparseMatrix& solidModel::Kfp() const { return impl_->Kfp; }
 
 

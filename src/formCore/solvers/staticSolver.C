@@ -404,6 +404,9 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         {
             predictedIncrement = (h/lastDeltaT_)*lastIncrement_;
         }
+        // Unknowns whose increments do not carry over (contact forces)
+        // stay at their committed values
+        model_.keepCommitted(predictedIncrement, previousIncrement_);
         model_.addToState(predictedIncrement);
         // The prescribed dofs at their values of t1: the predicted free
         // dofs moved with them, and a state with the free dofs moved but
