@@ -415,6 +415,40 @@ TEST(contactModel, forceControlledToolApproachesTheBody)
 }
 
 
+// The predictor's rule (contactModel::keepCommitted): a multiplier against
+// a rigid tool is extrapolated only where its last two increments have the
+// same sign; one that alternates, or has no history, keeps its committed
+// value; a force-controlled tool's position is always extrapolated
+TEST(contactModel, predictorKeepsAlternatingForces)
+{
+    const contactSetup s(true);
+    contactModel cm = s.model(0.2, 0, 0);
+    const int nC = cm.nUnknowns();
+    ASSERT_GT(nC, 4);
+    const int z = nC - 1;
+    ASSERT_EQ(cm.unknownName(z), "punch position");
+    vecX dx(nC), previous(nC);
+    for (int j = 0; j < nC; ++j)
+    {
+        dx(j) = 0.1*(j + 1);
+        // even: same sign as the step before; odd: the sign alternated
+        previous(j) = j % 2 == 0 ? 0.05 : -0.05;
+    }
+    vecX d = dx;
+    cm.keepCommitted(d, previous);
+    for (int j = 0; j < z; ++j)
+    {
+        EXPECT_EQ(d(j), j % 2 == 0 ? dx(j) : 0.0) << cm.unknownName(j);
+    }
+    EXPECT_EQ(d(z), dx(z));
+    // No history: every multiplier starts from its committed value
+    d = dx;
+    cm.keepCommitted(d, vecX());
+    EXPECT_EQ(d.head(z).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(d(z), dx(z));
+}
+
+
 // active(): true while a pair acts; false once its tool is released (the
 // scene then chooses the energy line search: formScene.C)
 TEST(contactModel, releasingEveryToolLeavesNoActivePair)
