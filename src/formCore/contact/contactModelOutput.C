@@ -164,30 +164,6 @@ std::vector<contactNodeResult> contactModel::pairResults
 int contactModel::nClosed() const { return impl_->nClosed; }
 
 
-void contactModel::keepCommitted(vecX& dx, const vecX& previous) const
-{
-    for (const auto& p : impl_->pairs)
-    {
-        // Rigid tools only: between two deformable bodies the forces
-        // move with both surfaces (the two-pass elastic punch of
-        // tests/cases/contact.sh took 9 iterations per step instead of
-        // 8 with its forces held)
-        if (p.tool < 0) continue;
-        // A force whose last two increments have the same sign grows or
-        // falls steadily (a die upsetting a billet) and is extrapolated;
-        // one whose increments alternated, or that has no history yet,
-        // starts from its committed value
-        for (int j = p.first; j < p.first + p.perNode*int(p.nodes.size()); ++j)
-        {
-            if (previous.size() != dx.size() || dx(j)*previous(j) <= 0)
-            {
-                dx(j) = 0;
-            }
-        }
-    }
-}
-
-
 std::string contactModel::unknownName(int j) const
 {
     const impl& m = *impl_;
