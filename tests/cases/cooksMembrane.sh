@@ -44,19 +44,47 @@ c=$(caseCopy cooksMembrane/neoHookean)
 run "$c" || fail "neo-Hookean run (see $c/log.formFoam)"
 tipSteps=$(summaryValue "$c" tipDisplacementY)
 checkClose "neo-Hookean reaction = -100" "$(summaryValue "$c" clampReactionY)" -100 1e-6
+# (with the tracked pressure of the mixed elements, solidElement.H, the
+# end of a step converges faster than quadratically, observed 2.9-3.5: the
+# update before removed the pressure error of the iterate; without it 1.8)
 rate=$(newtonOrder "$c/log.formFoam")
-if awk -v q="$rate" 'BEGIN { exit !(q != "" && q != "none" && q > 1.6 && q < 2.6) }'; then
-    pass "neo-Hookean Newton convergence order $rate (quadratic: ~2)"
+if awk -v q="$rate" 'BEGIN { exit !(q != "" && q != "none" && q > 1.6 && q < 6) }'; then
+    pass "neo-Hookean Newton convergence order $rate (at least quadratic)"
 else
-    fail "neo-Hookean Newton convergence order $rate (expected ~2)"
+    fail "neo-Hookean Newton convergence order $rate (expected at least ~2)"
+fi
+# The tracked pressure's saving (issue 20): 25 iterations in 6 steps,
+# 35 in 7 without it (28 with it but with the line search damping the
+# mixed steps)
+its=$(summaryValue "$c" newtonIterations)
+if [ -n "$its" ] && [ "$its" -le 27 ]; then
+    pass "neo-Hookean Newton iterations $its <= 27 (35 without the tracked pressure)"
+else
+    fail "neo-Hookean Newton iterations $its (expected <= 27; 35 without the tracked pressure)"
 fi
 
-# 5. One huge load step: must be cut back automatically, same answer
+# 5. The whole load in one step. With the tracked pressure (and the line
+#    search taking the mixed system's full steps) Newton converges in 5
+#    iterations without a cutback (before: 8 iterations were not enough
+#    and the step was cut back); with at most 3 iterations the step must
+#    be cut back automatically. Both reach the stepped run's answer.
 foamDictionary -case "$c" -entry deltaT -set 1 "$c/system/controlDict" > /dev/null
 foamDictionary -case "$c" -entry maxDeltaT -set 1 "$c/system/solidSolution" > /dev/null
 foamDictionary -case "$c" -entry maxIterations -set 8 "$c/system/solidSolution" > /dev/null
 rm -rf "$c/0."* "$c/1" "$c/postProcessing"
 run "$c" || fail "neo-Hookean single-step run"
+n=$(summaryValue "$c" cutbacks)
+its=$(summaryValue "$c" newtonIterations)
+if [ "$n" = 0 ] && [ -n "$its" ] && [ "$its" -le 6 ]; then
+    pass "the whole load in one step: $its Newton iterations, no cutback"
+else
+    fail "the whole load in one step: $its Newton iterations, $n cutbacks (expected <= 6, none)"
+fi
+checkClose "one-step run tip = stepped run tip" \
+    "$(summaryValue "$c" tipDisplacementY)" "$tipSteps" 1e-6
+foamDictionary -case "$c" -entry maxIterations -set 3 "$c/system/solidSolution" > /dev/null
+rm -rf "$c/0."* "$c/1" "$c/postProcessing"
+run "$c" || fail "neo-Hookean single-step run, 3 iterations"
 n=$(summaryValue "$c" cutbacks)
 checkBelow "large step was cut back automatically (summary cutbacks $n >= 1)" 0 "$n"
 checkClose "cut-back run tip = stepped run tip" \

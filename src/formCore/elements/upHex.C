@@ -174,7 +174,10 @@ bool upHex<NN, NP>::compute
     std::vector<materialState>& trial,
     vecX& fint,
     matX* K,
-    int elementId
+    int elementId,
+    const pressureLinearisation* tangentAt,
+    pressureLinearisation* linearisation,
+    vecX* fTracked
 ) const
 {
     const int nQ = nQuadrature();
@@ -190,6 +193,15 @@ bool upHex<NN, NP>::compute
     elementKinematics k;
     kinematics(X, u, linear, kappa, elementId, k);
 
+    // The pressure of the tangent's p-terms and of fTracked (solidElement.H,
+    // "tracked pressure"); the residual uses p_e(u)
+    vecP pTangent = k.pe;
+    if constexpr (NP > 0)
+    {
+        if ((K || fTracked) && !linear) pTangent = trackedPressure(k, u, tangentAt);
+        if (K && linearisation) linearisePressure(k, u, kappa, *linearisation);
+    }
+
     // 1 = m, I_sym = diag(1, 1, 1, 1/2, 1/2, 1/2) in Voigt form
     vec6 m;
     m << 1, 1, 1, 0, 0, 0;
@@ -197,6 +209,8 @@ bool upHex<NN, NP>::compute
     iSym << 1, 1, 1, 0.5, 0.5, 0.5;
 
     vecX f = vecX::Zero(nDof);
+    vecX fT;
+    if (fTracked) fT.setZero(nDof);
     matX Kt;
     if (K) Kt.setZero(nDof, nDof);
 
@@ -209,11 +223,14 @@ bool upHex<NN, NP>::compute
         {
             return false;
         }
-        const double p = pressure(k, q, kappa);
-        const mat3 tau = tauDev + p*mat3::Identity();
+        const double pR = pressure(k, q, kappa);
+        const mat3 tauR = tauDev + pR*mat3::Identity();
         const double dV = pk.g.dV;
 
-        f += pk.B.transpose()*toVoigtStress(tau)*dV;
+        f += pk.B.transpose()*toVoigtStress(tauR)*dV;
+        const double p = NP > 0 ? double(pk.Np.dot(pTangent)) : pR;
+        const mat3 tau = tauDev + p*mat3::Identity();
+        if (fTracked) fT += pk.B.transpose()*toVoigtStress(tau)*dV;
         if (!K) continue;
 
         mat6 c = cDev;
@@ -237,6 +254,7 @@ bool upHex<NN, NP>::compute
     }
 
     fint = f;
+    if (fTracked) *fTracked = fT;
     if (K)
     {
         if constexpr (NP > 0)

@@ -201,7 +201,10 @@ bool upQuad<NN, NP>::compute
     std::vector<materialState>& trial,
     vecX& fint,
     matX* K,
-    int elementId
+    int elementId,
+    const pressureLinearisation* tangentAt,
+    pressureLinearisation* linearisation,
+    vecX* fTracked
 ) const
 {
     const int nQ = nQuadrature();
@@ -218,11 +221,21 @@ bool upQuad<NN, NP>::compute
     elementKinematics k;
     kinematics(X, u, linear, kappa, elementId, k);
 
+    // The pressure of the tangent's p-terms and of fTracked (solidElement.H,
+    // "tracked pressure"); the residual uses p_e(u)
+    vecP pTangent = k.pe;
+    if constexpr (NP > 0)
+    {
+        if ((K || fTracked) && !linear) pTangent = trackedPressure(k, u, tangentAt);
+        if (K && linearisation) linearisePressure(k, u, kappa, *linearisation);
+    }
+
     // Voigt rows (xx, yy, zz, xy): 1 = m, I_sym = diag(1, 1, 1, 1/2)
     const Eigen::Vector4d m(1, 1, 1, 0);
     const Eigen::Vector4d iSym(1, 1, 1, 0.5);
 
     Eigen::Matrix<double, nDof, 1> f = Eigen::Matrix<double, nDof, 1>::Zero();
+    Eigen::Matrix<double, nDof, 1> fT = Eigen::Matrix<double, nDof, 1>::Zero();
     Eigen::Matrix<double, nDof, nDof> Kt =
         Eigen::Matrix<double, nDof, nDof>::Zero();
 
@@ -235,12 +248,19 @@ bool upQuad<NN, NP>::compute
         {
             return false;
         }
-        const double p = pressure(k, q, kappa);
-        const mat3 tau = tauDev + p*mat3::Identity();
-        const Eigen::Vector4d tauV(tau(0, 0), tau(1, 1), tau(2, 2), tau(0, 1));
+        const double pR = pressure(k, q, kappa);
+        const mat3 tauR = tauDev + pR*mat3::Identity();
+        const Eigen::Vector4d tauV(tauR(0, 0), tauR(1, 1), tauR(2, 2), tauR(0, 1));
         const double dV = pk.g.dV;
 
         f += pk.B.transpose()*tauV*dV;
+        const double p = NP > 0 ? double(pk.Np.dot(pTangent)) : pR;
+        const mat3 tau = tauDev + p*mat3::Identity();
+        if (fTracked)
+        {
+            fT += pk.B.transpose()
+               *Eigen::Vector4d(tau(0, 0), tau(1, 1), tau(2, 2), tau(0, 1))*dV;
+        }
         if (!K) continue;
 
         Eigen::Matrix4d c = cDev.topLeftCorner<4, 4>();
@@ -277,6 +297,7 @@ bool upQuad<NN, NP>::compute
     }
 
     fint = f;
+    if (fTracked) *fTracked = fT;
     if (K)
     {
         if constexpr (NP > 0)

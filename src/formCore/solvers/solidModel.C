@@ -114,10 +114,13 @@ bool solidModel::impl::computeElement
     matX& X,
     matX& u,
     vecX& fe,
-    matX* Ke
+    matX* Ke,
+    vecX* feTracked,
+    bool* tracked
 )
 {
     const int b = elemBlock[e];
+    if (tracked) *tracked = false;
     if (!blocks[b].kernel)
     {
         return shells->compute
@@ -126,6 +129,17 @@ bool solidModel::impl::computeElement
         );
     }
     gather(e, X, u);
+    if (trackPressure && blocks[b].kernel->nPressure() > 0)
+    {
+        const bool active = linActive[e].valid();
+        if (tracked) *tracked = active && feTracked;
+        return blocks[b].kernel->compute
+        (
+            X, u, *blocks[b].mat, committed[e], trial[e], fe, Ke, e,
+            &linActive[e], Ke ? &linPending[e] : nullptr,
+            active ? feTracked : nullptr
+        );
+    }
     return blocks[b].kernel->compute
     (
         X, u, *blocks[b].mat, committed[e], trial[e], fe, Ke, e
@@ -326,6 +340,7 @@ solidModel::solidModel
         m.blocks.push_back(std::move(d));
     }
     m.trial = m.committed;
+    m.resetPressureLinearisations();
 
     m.orphan.assign(m.nDofs(), false);
     for (int node = 0; node < nNodes; ++node)
@@ -413,6 +428,9 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
 
     m.fint.setZero(m.nDofs());
     m.fext.setZero(m.nDofs());
+    m.anyTracked = false;
+    for (const auto& l : m.linActive) m.anyTracked = m.anyTracked || l.valid();
+    if (m.anyTracked) m.fintTrackedShift.setZero(m.nDofs());
     if (wantTangent)
     {
         std::fill_n(m.Kff.valuePtr(), m.Kff.nonZeros(), 0.0);
@@ -435,7 +453,7 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
     #pragma omp parallel
     {
         matX X, u, Ke;
-        vecX fe;
+        vecX fe, feTracked;
         for (const std::vector<int>& elements : colours)
         {
             const int nc = int(elements.size());
@@ -449,9 +467,11 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
                 const int e = elements[k];
                 try
                 {
+                    bool tracked = false;
                     const bool ok = m.computeElement
                     (
-                        e, X, u, fe, wantTangent ? &Ke : nullptr
+                        e, X, u, fe, wantTangent ? &Ke : nullptr,
+                        m.anyTracked ? &feTracked : nullptr, &tracked
                     );
                     if (!ok)
                     {
@@ -467,6 +487,17 @@ bool solidModel::evaluate(double t, vecX& residual, bool wantTangent)
                         for (int i = 0; i < nd; ++i)
                         {
                             fint[m.dofs.dof(nodes[a], i)] += fe(a*nd + i);
+                        }
+                    }
+                    if (tracked)
+                    {
+                        for (int a = 0; a < blk.nodesPerElement; ++a)
+                        {
+                            for (int i = 0; i < nd; ++i)
+                            {
+                                m.fintTrackedShift(m.dofs.dof(nodes[a], i)) +=
+                                    feTracked(a*nd + i) - fe(a*nd + i);
+                            }
                         }
                     }
                     if (wantTangent && m.inertia && m.alpha != 0)
@@ -880,6 +911,7 @@ void solidModel::setMaterialStates
     }
     m.committed = states;
     m.trial = states;
+    m.resetPressureLinearisations();
 }
 
 
@@ -918,6 +950,8 @@ void solidModel::commit()
     if (m.shells) m.shells->commit(m.dofs, m.U);
     m.Ucommitted = m.U;
     m.committed = m.trial;
+    m.linCommitted = m.linPending;
+    m.linActive = m.linCommitted;
     for (const auto& b : m.coupled) b->commit(m.U);
     updateShellContactThickness();
 }
@@ -928,7 +962,56 @@ void solidModel::revert()
     impl& m = *impl_;
     m.U = m.Ucommitted;
     m.trial = m.committed;
+    m.linActive = m.linCommitted;
     for (const auto& b : m.coupled) b->revert();
+}
+
+
+void solidModel::impl::resetPressureLinearisations()
+{
+    linPending.assign(trial.size(), pressureLinearisation());
+    linActive = linPending;
+    linCommitted = linPending;
+}
+
+
+void solidModel::tangentFactorised()
+{
+    impl& m = *impl_;
+    if (m.trackPressure) m.linActive = m.linPending;
+}
+
+
+void solidModel::forgetPressureLinearisation()
+{
+    impl& m = *impl_;
+    m.linActive.assign(m.linActive.size(), pressureLinearisation());
+}
+
+
+void solidModel::setPressureTracking(bool on)
+{
+    impl_->trackPressure = on;
+}
+
+
+bool solidModel::tracksPressure() const
+{
+    return impl_->anyTracked;
+}
+
+
+vecX solidModel::trackedResidual(const vecX& r) const
+{
+    const impl& m = *impl_;
+    vecX rt = r;
+    if (!m.anyTracked) return rt;
+    const int nFree = m.numbering.nFree();
+    for (int k = 0; k < nFree && k < rt.size(); ++k)
+    {
+        rt(k) -= m.fintTrackedShift(m.numbering.freeDofs[k]);
+    }
+    return rt;
 }
 
 

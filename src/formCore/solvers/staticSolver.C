@@ -54,6 +54,9 @@ staticSolver::staticSolver
     log_(log)
 {
     checkSolver();
+    // The tangent check compares the tangent with differences of the
+    // residual: the tracked pressure (solidElement.H) is off there
+    model_.setPressureTracking(!newton_.checkTangent);
     if (newton_.maxIterations < 1)
     {
         throw inputError("maxIterations", "maxIterations must be >= 1");
@@ -122,6 +125,7 @@ vecX staticSolver::solveLinear(const vecX& rhs)
         analysedRevision_ = model_.patternRevision();
     }
     ++times.factorisations;
+    model_.tangentFactorised();
     try
     {
         solver_.factorize(model_.K());
@@ -157,6 +161,21 @@ vecX staticSolver::solveAgain(const vecX& rhs)
         throw stepFailure("linear solve returned non-finite values");
     }
     return dU;
+}
+
+
+bool staticSolver::fullStepAccepted
+(
+    const vecX& dU,
+    const vecX& r0,
+    const vecX& r,
+    double rRef
+) const
+{
+    if (newton_.residualLineSearch) return r.norm() <= (1 - 1e-4)*rRef;
+    const double s0 = dU.dot(r0);
+    const double s1 = dU.dot(r);
+    return std::abs(s1) <= newton_.lineSearchTolerance*std::abs(s0) || s1*s0 > 0;
 }
 
 
@@ -414,6 +433,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         // prescribed boundary by a whole increment (bending under a
         // prescribed end rotation turned the tangent indefinite)
         model_.applyPrescribed(t1);
+        model_.forgetPressureLinearisation();
         predicted = true;
     }
 
@@ -590,24 +610,41 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         const bool negligible =
             i > 1
          && std::abs(dU.dot(rhs)) <= newton_.energyTolerance*energy1;
-        if (newton_.lineSearch && !negligible)
+        bool search = newton_.lineSearch && !negligible;
+        // The residual norm the backtracking must go below (non-monotone:
+        // the largest of the last lineSearchMemory + 1)
+        const double rRef = *std::max_element
+        (
+            recent.end()
+          - std::min<std::ptrdiff_t>
+            (
+                recent.size(), newton_.lineSearchMemory + 1
+            ),
+            recent.end()
+        );
+        // The tracked pressure (solidElement.H): a full step that the
+        // energy line search would damp is taken if the residual with the
+        // mixed system's own pressure update accepts it, where the residual
+        // is mostly kappa times the step's second-order volume error (the
+        // difference of the two is more than half of it)
+        if (search && ok && !newton_.residualLineSearch && model_.tracksPressure())
+        {
+            const vecX rt = model_.trackedResidual(r);
+            if
+            (
+                (r - rt).norm() > 0.5*r.norm()
+             && !fullStepAccepted(dU, rhs, r, rRef)
+             && fullStepAccepted(dU, rhs, rt, rRef)
+            )
+            {
+                search = false;
+            }
+        }
+        if (search)
         {
             ok =
                 newton_.residualLineSearch
-              ? residualLineSearch
-                (
-                    t1, dU,
-                    *std::max_element
-                    (
-                        recent.end()
-                      - std::min<std::ptrdiff_t>
-                        (
-                            recent.size(), newton_.lineSearchMemory + 1
-                        ),
-                        recent.end()
-                    ),
-                    ok, r, beta
-                )
+              ? residualLineSearch(t1, dU, rRef, ok, r, beta)
               : lineSearch(t1, dU, rhs, ok, r, beta);
         }
         if (!ok)

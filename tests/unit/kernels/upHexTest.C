@@ -4,7 +4,8 @@
 // geometry and large displacements; exact linearity for linearElastic;
 // rigid-body invariance under a finite rotation about an oblique axis;
 // the mass matrix; and Hex27P4 extruded under a plane-strain deformation
-// reproducing Q9P3 node by node (forces and tangent), elastic and plastic.
+// reproducing Q9P3 node by node (forces and tangent), elastic and plastic;
+// the tracked pressure of the mixed elements (trackedPressureCheck.H).
 #include "solidElement.H"
 #include "hexShape.H"
 #include "formError.H"
@@ -13,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include "../fdCheck.H"
+#include "trackedPressureCheck.H"
 
 // Tolerances about 10 x the largest error observed (fdCheck.H). The
 // elastic check uses h = 3e-7: with 20 % displacements of a distorted
@@ -22,6 +24,7 @@ namespace
 {
 constexpr double fdTolHexElastic = 2e-8;
 constexpr double fdTolHexPlastic = 1e-8;
+constexpr double fdTolHexTracked = 2e-8;
 }
 
 using namespace form;
@@ -344,4 +347,19 @@ TEST(upHex, typePropertiesAndBadInput)
     std::vector<materialState> s0(8, mat->initialState()), s1;
     vecX f;
     EXPECT_THROW(h8->compute(X, matX::Zero(8, 3), *mat, s0, s1, f, nullptr, 3), numericalError);
+}
+
+
+TEST(upHex, trackedPressureTangent)
+{
+    std::mt19937 rng(11);
+    const auto mat = material::New("neoHookean", {{"E", 100}, {"nu", 0.4999}});
+    for (const std::string type : {"Hex8P1", "Hex27P4"})
+    {
+        const auto el = solidElement::New(type, analysisType::solid3D);
+        const matX X = randomHex(el->nNodes(), rng);
+        evaluation e;
+        const matX u = admissibleDisplacement(*el, X, *mat, 0.2, rng, e);
+        test::checkTrackedPressure(*el, X, u, *mat, fdTolHexTracked, type);
+    }
 }

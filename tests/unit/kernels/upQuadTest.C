@@ -2,7 +2,8 @@
 // differences of f_int for every element type x {planeStrain, axisymmetric}
 // x {linearElastic, neoHookean} at random distorted geometry and random large
 // displacements; exact linearity for linearElastic; rigid-body invariance;
-// mass matrix; averaged results; inversion detection.
+// mass matrix; averaged results; inversion detection; the tracked pressure
+// of the mixed elements (trackedPressureCheck.H).
 #include "solidElement.H"
 #include "formError.H"
 #include "materialInput.H"
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include "../fdCheck.H"
+#include "trackedPressureCheck.H"
 
 // Finite-difference tolerances (fdCheck.H: about 10 x the largest error
 // observed over the samples; the log prints each margin)
@@ -17,6 +19,7 @@ namespace
 {
 constexpr double fdTolElemElastic = 2e-8;
 constexpr double fdTolElemPlastic = 1e-8;
+constexpr double fdTolTracked = 2e-8;
 }
 
 using namespace form;
@@ -350,6 +353,42 @@ TEST(upQuad, elastoPlasticTangentMatchesFiniteDifferences)
                 EXPECT_TRUE(test::fdError("element tangent (elastoPlastic)", test::relErr(e.K, Kfd), fdTolElemPlastic)) << type << " "
                     << analysisTypeName(a) << " "
                     << (in == &vm ? "vonMises" : "hill48 AF");
+            }
+        }
+    }
+}
+
+
+TEST(upQuad, trackedPressureTangent)
+{
+    // Q4P1 and Q9P3, plane strain and axisymmetric, neoHookean (nearly
+    // incompressible and not), at random distorted geometry and large
+    // displacements
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    for (const double nu : {0.3, 0.4999})
+    {
+        const auto mat = material::New("neoHookean", {{"E", 100}, {"nu", nu}});
+        for (const analysisType a : analyses)
+        {
+            for (const std::string type : {"Q4P1", "Q9P3"})
+            {
+                const auto el = solidElement::New(type, a);
+                const matX X = randomElement(el->nNodes(), rng);
+                matX u;
+                for (int tries = 0; ; ++tries)
+                {
+                    ASSERT_LT(tries, 50);
+                    u = 0.25*matX::NullaryExpr(el->nNodes(), 2,
+                        [&]() { return uni(rng); });
+                    try { evaluate(*el, X, u, *mat); break; }
+                    catch (const inversionError&) {}
+                }
+                test::checkTrackedPressure
+                (
+                    *el, X, u, *mat, fdTolTracked,
+                    type + " " + analysisTypeName(a) + " nu " + std::to_string(nu)
+                );
             }
         }
     }

@@ -133,7 +133,12 @@ TEST(cooksMembrane, Q9P3NearlyIncompressibleConverges)
 }
 
 
-TEST(cooksMembrane, NeoHookeanLargeDeformationConvergesQuadratically)
+namespace
+{
+// Cook's neo-Hookean run with or without the tracked pressure of the
+// mixed elements (solidElement.H); returns the Newton iterations and the
+// tip deflection
+std::pair<int, double> neoHookeanCook(bool tracked)
 {
     // E = 240.565, nu = 0.4999 (kappa/G = 5000), shear traction 6.25 per
     // unit length (total 100), 10 load steps. umfpack: intermediate Newton
@@ -147,11 +152,12 @@ TEST(cooksMembrane, NeoHookeanLargeDeformationConvergesQuadratically)
     sc.growthFactor = 1;
     std::ostringstream log;
     staticSolver s(*c.model, *solver, {}, sc, log);
+    c.model->setPressureTracking(tracked);
     std::vector<stepReport> reports;
-    ASSERT_NO_THROW(s.run([&](const stepReport& r) { reports.push_back(r); }))
+    EXPECT_NO_THROW(s.run([&](const stepReport& r) { reports.push_back(r); }))
         << log.str();
     std::cout << log.str();
-    ASSERT_EQ(reports.size(), 10u);
+    EXPECT_EQ(reports.size(), 10u);
     EXPECT_EQ(reports.back().time, 1.0);
     for (const stepReport& r : reports)
     {
@@ -173,6 +179,8 @@ TEST(cooksMembrane, NeoHookeanLargeDeformationConvergesQuadratically)
         // update): the last two rates of the quadratic range lie near 2.
         // (||r|| itself is dominated by the stiff volumetric modes and
         // reaches its round-off floor ~1e-9 after one quadratic step.)
+        // With the tracked pressure the end is faster than quadratic (the
+        // pressure error of the iterate is gone with the update before).
         std::vector<double> e;
         for (std::size_t k = 1; k < r.energyNorms.size(); ++k)
         {
@@ -186,11 +194,26 @@ TEST(cooksMembrane, NeoHookeanLargeDeformationConvergesQuadratically)
                 q.push_back(std::log(e[k + 1])/std::log(e[k]));
             }
         }
-        ASSERT_GE(q.size(), 2u) << "step " << r.step;
-        for (std::size_t k = q.size() - 2; k < q.size(); ++k)
+        if (!tracked)
         {
-            EXPECT_GT(q[k], 1.6) << "step " << r.step;
-            EXPECT_LT(q[k], 2.4) << "step " << r.step;
+            EXPECT_GE(q.size(), 2u) << "step " << r.step;
+            for (std::size_t k = q.size() < 2 ? 0 : q.size() - 2; k < q.size(); ++k)
+            {
+                EXPECT_GT(q[k], 1.6) << "step " << r.step;
+                EXPECT_LT(q[k], 2.4) << "step " << r.step;
+            }
+        }
+        else
+        {
+            // Too fast for two rates (energy 4e-2 -> 1e-11 in one
+            // update): the last update is at least quadratic in the one
+            // before, d_last <= 10 d_prev^2 (d: |dU| relative to the first)
+            const std::vector<double>& d = r.updateNorms;
+            EXPECT_GE(d.size(), 3u) << "step " << r.step;
+            if (d.size() < 3) continue;
+            const double d1 = d[d.size() - 2]/d[1];
+            const double d2 = d.back()/d[1];
+            EXPECT_LT(d2, 10*d1*d1) << "step " << r.step;
         }
     }
     std::cout << "Cook's neo-Hookean (E 240.565, nu 0.4999, 6.25), Q9P3 16x16:"
@@ -206,4 +229,17 @@ TEST(cooksMembrane, NeoHookeanLargeDeformationConvergesQuadratically)
     const phaseTimes& t = c.model->times();
     std::cout << "  assembly " << t.assembly << " s, factorisation "
               << t.factorisation << " s, solve " << t.solve << " s\n";
+    return {s.totalIterations(), c.v()};
+}
+}
+
+
+TEST(cooksMembrane, NeoHookeanLargeDeformationConvergesQuadratically)
+{
+    // The tracked pressure changes the Newton path, not the solution, and
+    // saves iterations (observed 87 -> 31 with these zero-increment starts)
+    const auto plain = neoHookeanCook(false);
+    const auto tracked = neoHookeanCook(true);
+    EXPECT_NEAR(tracked.second, plain.second, 1e-9*plain.second);
+    EXPECT_LT(tracked.first, plain.first);
 }
