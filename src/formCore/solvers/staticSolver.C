@@ -247,6 +247,9 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     if (predict)
     {
         const double h = t1 - t0;
+        // predicted increment = c1 dU1 + c2 dU2 (last, previous): the
+        // element pressures are extrapolated with the same weights
+        double c1 = h/lastDeltaT_, c2 = 0;
         if
         (
             newton_.quadratic && previousDeltaT_ > 0
@@ -261,6 +264,9 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             const vecX d1 = lastIncrement_/h1;
             const vecX d0 = previousIncrement_/h2;
             predictedIncrement = h*d1 + (h*(h + h1)/(h1 + h2))*(d1 - d0);
+            const double q = h*(h + h1)/(h1 + h2);
+            c1 = (h + q)/h1;
+            c2 = -q/h2;
         }
         else
         {
@@ -276,7 +282,16 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         // prescribed boundary by a whole increment (bending under a
         // prescribed end rotation turned the tangent indefinite)
         model_.applyPrescribed(t1);
-        model_.forgetPressureLinearisation();
+        // (linearised: the committed linearisations stay active)
+        using pp = newtonControls::pressurePrediction;
+        if (newton_.pressurePredictor == pp::extrapolated)
+        {
+            model_.predictPressure(c1, c2);
+        }
+        else if (newton_.pressurePredictor == pp::projected)
+        {
+            model_.forgetPressureLinearisation();
+        }
         predicted = true;
     }
 
@@ -840,7 +855,7 @@ resumeState staticSolver::resume() const
     return
     {
         nextDeltaT_, lastIncrement_, lastDeltaT_, previousIncrement_,
-        previousDeltaT_
+        previousDeltaT_, model_.pressureHistory()
     };
 }
 
@@ -852,6 +867,7 @@ void staticSolver::resume(const resumeState& s)
     lastDeltaT_ = s.lastDeltaT;
     previousIncrement_ = s.previousIncrement;
     previousDeltaT_ = s.previousDeltaT;
+    model_.setPressureHistory(s.pressureHistory);
 }
 
 } // namespace form

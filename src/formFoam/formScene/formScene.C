@@ -338,6 +338,13 @@ void Foam::formScene::printScene() const
              : newton_.extrapolate ? "extrapolated last increment"
              : "last state"
            )
+        << (
+               !newton_.extrapolate ? ""
+             : newton_.pressurePredictor
+            == form::newtonControls::pressurePrediction::extrapolated
+             ? " (u/p elements: pressures extrapolated too)"
+             : " (u/p elements: committed pressures linearised)"
+           )
         << nl;
     if (contact_)
     {
@@ -489,6 +496,14 @@ Foam::formScene::formScene(Time& runTime)
     newton_.quadratic =
         predictor_ == "quadratic"
      || (predictor_ == "auto" && !contact_ && !fluid_ && !dynamic_);
+    // The pressures of the mixed elements at a predicted state
+    // (staticSolver.H): extrapolated with the displacements, or, with
+    // contact, the committed ones carried along their linearisation
+    // (element pressures under a tool radius alternate from step to step)
+    newton_.pressurePredictor =
+        contact_
+      ? form::newtonControls::pressurePrediction::linearised
+      : form::newtonControls::pressurePrediction::extrapolated;
 
     // auto: UMFPACK for unsymmetric tangents; otherwise CHOLMOD, switching
     // to UMFPACK if a tangent turns out indefinite (autoSolver.H)

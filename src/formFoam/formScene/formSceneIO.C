@@ -260,6 +260,13 @@ void Foam::formScene::readRunState()
     };
     resume_.lastIncrement = vec("lastIncrement");
     resume_.previousIncrement = vec("previousIncrement");
+    // (restart files written before 2026-11-28 have no pressure history:
+    // the predictor then starts without it)
+    if (d.found("pressureHistory"))
+    {
+        const form::vecX h = vec("pressureHistory");
+        resume_.pressureHistory.assign(h.data(), h.data() + h.size());
+    }
 }
 
 
@@ -352,6 +359,17 @@ void Foam::formScene::writeTime
         d.add("previousDeltaT", rs.previousDeltaT);
         d.add("lastIncrement", list(rs.lastIncrement));
         d.add("previousIncrement", list(rs.previousIncrement));
+        d.add
+        (
+            "pressureHistory",
+            list
+            (
+                Eigen::Map<const form::vecX>
+                (
+                    rs.pressureHistory.data(), rs.pressureHistory.size()
+                )
+            )
+        );
         ok = d.regIOobject::write() && ok;
         IOstream::defaultPrecision(precision);
     }
