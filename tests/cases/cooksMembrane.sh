@@ -44,14 +44,29 @@ c=$(caseCopy cooksMembrane/neoHookean)
 run "$c" || fail "neo-Hookean run (see $c/log.formFoam)"
 tipSteps=$(summaryValue "$c" tipDisplacementY)
 checkClose "neo-Hookean reaction = -100" "$(summaryValue "$c" clampReactionY)" -100 1e-6
-# (with the tracked pressure of the mixed elements, solidElement.H, the
-# end of a step converges faster than quadratically, observed 2.9-3.5: the
-# update before removed the pressure error of the iterate; without it 1.8)
-rate=$(newtonOrder "$c/log.formFoam")
-if awk -v q="$rate" 'BEGIN { exit !(q != "" && q != "none" && q > 1.6 && q < 6) }'; then
-    pass "neo-Hookean Newton convergence order $rate (at least quadratic)"
+# (with the tracked pressure of the mixed elements, solidElement.H, and
+# the predicted pressures the steps take 2-4 iterations, too few for the
+# order from three successive energies, and the end is faster than
+# quadratic. Checked instead on the last three update norms of every step
+# that has them: the contraction improves at least tenfold from one update
+# to the next, (d3/d2)/(d2/d1) <= 0.1, which a linear rate (ratio 1)
+# fails and a quadratic end (ratio d2/d1) passes; observed <= 5e-3)
+read -r worst nChecked < <(awk '
+    /^Step / { flush(); next }
+    match($0, /\|dU\| [0-9.eE+-]+/) { d[n++] = substr($0, RSTART + 5, RLENGTH - 5) + 0 }
+    function flush(   q) {
+        if (n >= 3 && d[n-3] > 0 && d[n-2] > 0) {
+            q = (d[n-1]/d[n-2])/(d[n-2]/d[n-3])
+            if (q > worst) worst = q
+            ++steps
+        }
+        n = 0
+    }
+    END { flush(); print (steps ? worst : "none"), steps + 0 }' "$c/log.formFoam")
+if awk -v w="$worst" -v n="$nChecked" 'BEGIN { exit !(w != "none" && w <= 0.1 && n >= 3) }'; then
+    pass "neo-Hookean Newton ends superlinearly in each of $nChecked steps (largest (d3/d2)/(d2/d1) $worst <= 0.1)"
 else
-    fail "neo-Hookean Newton convergence order $rate (expected at least ~2)"
+    fail "neo-Hookean Newton end: largest (d3/d2)/(d2/d1) $worst over $nChecked steps (expected <= 0.1, at least 3 steps)"
 fi
 # The tracked pressure's saving (issue 20): 18 iterations in 6 steps
 # (every predicted step in 3), 25 with the pressures at the predicted

@@ -95,6 +95,7 @@ void solidModel::restore(const savedState& s)
     if (m.shells) m.shells->setState(s.shells);
     updateShellContactThickness();
     setPressureHistory(s.pressures);
+    lineariseCommittedPressures();
 }
 
 
@@ -265,6 +266,29 @@ void solidModel::setPressureHistory(const std::vector<double>& h)
     }
     if (i != h.size()) throw bad();
     m.nPressureHistory = int(n);
+}
+
+
+void solidModel::lineariseCommittedPressures()
+{
+    impl& m = *impl_;
+    if (!m.trackPressure) return;
+    const vecX U = m.U;
+    m.U = m.Ucommitted;
+    matX X, u, Ke;
+    vecX fe;
+    for (std::size_t e = 0; e < m.linActive.size(); ++e)
+    {
+        const auto& kernel = m.blocks[m.elemBlock[e]].kernel;
+        if (!kernel || kernel->nPressure() == 0) continue;
+        // with no active linearisation the element takes p_e(u)
+        m.linActive[e] = pressureLinearisation();
+        m.computeElement(int(e), X, u, fe, &Ke);
+    }
+    m.linCommitted = m.linPending;
+    m.linActive = m.linCommitted;
+    m.trial = m.committed;
+    m.U = U;
 }
 
 

@@ -868,6 +868,7 @@ void staticSolver::resume(const resumeState& s)
     previousIncrement_ = s.previousIncrement;
     previousDeltaT_ = s.previousDeltaT;
     model_.setPressureHistory(s.pressureHistory);
+    model_.lineariseCommittedPressures();
 }
 
 } // namespace form

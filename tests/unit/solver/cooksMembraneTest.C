@@ -262,9 +262,11 @@ struct predictedRun
     std::string log;
 };
 
+using pressurePrediction = newtonControls::pressurePrediction;
+
 predictedRun predictedCook
 (
-    bool extrapolatePressure,
+    pressurePrediction mode,
     const predictedRun* from = nullptr,
     bool withHistory = true
 )
@@ -274,10 +276,7 @@ predictedRun predictedCook
     newtonControls nc;
     nc.extrapolate = true;
     nc.quadratic = true;
-    nc.pressurePredictor =
-        extrapolatePressure
-      ? newtonControls::pressurePrediction::extrapolated
-      : newtonControls::pressurePrediction::projected;
+    nc.pressurePredictor = mode;
     predictedRun out;
     std::ostringstream log;
     const auto steps = [&](double t0, double t1, resumeState* rs)
@@ -323,8 +322,8 @@ TEST(cooksMembrane, PredictedPressureSavesTheSecondIteration)
     // progress; the pressures extrapolated like the displacements do not
     // (observed per step, 10 equal steps: 4 4 3 3 3 3 3 3 3 3 -> 4 3 2 2 2
     // 2 2 2 2 2)
-    const predictedRun off = predictedCook(false);
-    const predictedRun on = predictedCook(true);
+    const predictedRun off = predictedCook(pressurePrediction::projected);
+    const predictedRun on = predictedCook(pressurePrediction::extrapolated);
     std::cout << "Cook's neo-Hookean, quadratic predictor, iterations per step"
               << " (pressures extrapolated / p_e of the prediction):";
     for (std::size_t k = 0; k < on.iterations.size(); ++k)
@@ -356,9 +355,10 @@ TEST(cooksMembrane, RestartKeepsThePredictedPressures)
     // the same iterations and deflection to round-off. Without the
     // pressure history in the run state the first steps fall back to
     // p_e of the prediction: the test sees the difference
-    const predictedRun whole = predictedCook(true);
-    const predictedRun restarted = predictedCook(true, &whole);
-    const predictedRun lost = predictedCook(true, &whole, false);
+    const auto ext = pressurePrediction::extrapolated;
+    const predictedRun whole = predictedCook(ext);
+    const predictedRun restarted = predictedCook(ext, &whole);
+    const predictedRun lost = predictedCook(ext, &whole, false);
     ASSERT_EQ(whole.iterations.size(), 10u) << whole.log;
     ASSERT_EQ(restarted.iterations.size(), 5u) << restarted.log;
     for (std::size_t k = 0; k < 5; ++k)
@@ -369,6 +369,21 @@ TEST(cooksMembrane, RestartKeepsThePredictedPressures)
     EXPECT_NEAR(restarted.v, whole.v, 1e-13*whole.v);
     ASSERT_EQ(lost.iterations.size(), 5u) << lost.log;
     EXPECT_GT(lost.iterations[0], whole.iterations[5]);
+
+    // The same with the committed pressures carried along their
+    // linearisation (the contact cases' rule): the restored model
+    // linearises its committed state again, as the converged step left it
+    const auto lin = pressurePrediction::linearised;
+    const predictedRun wholeLin = predictedCook(lin);
+    const predictedRun restartedLin = predictedCook(lin, &wholeLin);
+    ASSERT_EQ(wholeLin.iterations.size(), 10u) << wholeLin.log;
+    ASSERT_EQ(restartedLin.iterations.size(), 5u) << restartedLin.log;
+    for (std::size_t k = 0; k < 5; ++k)
+    {
+        EXPECT_EQ(restartedLin.iterations[k], wholeLin.iterations[5 + k])
+            << "step " << 6 + k;
+    }
+    EXPECT_NEAR(restartedLin.v, wholeLin.v, 1e-13*wholeLin.v);
 
     // A list that does not fit the model's elements is refused
     cooksMembrane c("Q9P3", 4, "neoHookean", 240.565, 0.4999, 6.25);
