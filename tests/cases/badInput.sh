@@ -285,7 +285,10 @@ plain=$(mktemp -d "${TMPDIR:-/tmp}/formFoamValid.XXXXXX")
 cp -r "$formFoamTop/tutorials/cooksMembrane/neoHookean/." "$plain/"
 (cd "$plain" && ./Allclean > /dev/null 2>&1; blockMesh -region solid > log.blockMesh 2>&1; formFoam > log.formFoam 2>&1)
 tip0=$(awk '$1 == "tipDisplacementY" { sub(/;$/, "", $2); print $2 }' "$plain/postProcessing/summary")
-valid "Cook's neo-Hookean, endTime 1.2 past the load" cooksMembrane/neoHookean \
-    "foamDictionary -entry endTime -set 1.2 system/controlDict > /dev/null"
-checkClose "Cook's neo-Hookean, endTime 1.2: tip displacement as the plain run" "$(cat "$validCase/tip")" "$tip0" 1e-9
+# (endTime 1.5: the step that contains the end of the load, t = 1, may
+# end as late as 1.25 with maxDeltaT 0.25, as it does since the predicted
+# pressures of 2026-11-28; 1.5 leaves at least one step wholly past it)
+valid "Cook's neo-Hookean, endTime 1.5 past the load" cooksMembrane/neoHookean \
+    "foamDictionary -entry endTime -set 1.5 system/controlDict > /dev/null"
+checkClose "Cook's neo-Hookean, endTime 1.5: tip displacement as the plain run" "$(cat "$validCase/tip")" "$tip0" 1e-9
 rm -rf "$validCase" "$plain"
