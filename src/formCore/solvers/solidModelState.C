@@ -128,6 +128,12 @@ void solidModel::impl::resetPressureLinearisations()
     linPending.assign(trial.size(), pressureLinearisation());
     linActive = linPending;
     linCommitted = linPending;
+    clearPressureHistory();
+}
+
+
+void solidModel::impl::clearPressureHistory()
+{
     for (auto& h : pressureHistory) h.clear();
     nPressureHistory = 0;
 }
@@ -153,8 +159,7 @@ void solidModel::impl::commitPressureHistory()
     }
     if (!trackPressure || !any || !atState)
     {
-        for (auto& h : pressureHistory) h.clear();
-        nPressureHistory = 0;
+        clearPressureHistory();
         return;
     }
     pressureHistory[2] = std::move(pressureHistory[1]);
@@ -233,8 +238,7 @@ std::vector<double> solidModel::pressureHistory() const
 void solidModel::setPressureHistory(const std::vector<double>& h)
 {
     impl& m = *impl_;
-    for (auto& l : m.pressureHistory) l.clear();
-    m.nPressureHistory = 0;
+    m.clearPressureHistory();
     if (h.empty()) return;
     const std::size_t nElements = m.linActive.size();
     const auto bad = []()
