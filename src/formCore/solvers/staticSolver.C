@@ -35,6 +35,10 @@ struct stepFailure : public numericalError
     using numericalError::numericalError;
 };
 
+// Loads held in a step: the start state's residuals with the loads of t0
+// and of t1 differ by round-off only (relative to the force level)
+constexpr double heldLoadTolerance = 1e-12;
+
 } // namespace
 
 
@@ -220,10 +224,21 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     // A step with nothing to do (a held load, a dwell) must not be
     // pushed off its equilibrium by the last increment: when no
     // prescribed dof moves, the start state is checked first (one
-    // residual, no tangent) and accepted if it is in equilibrium
+    // residual, no tangent) and accepted if it is in equilibrium and the
+    // loads did not change: its residual with the loads of t0 is the same
+    // (to round-off). Under a slowly ramped load (the bulge's pressure
+    // control at forceTolerance 1e-3) a small increment would otherwise
+    // pass the force test step after step with no iteration, and the
+    // energy criterion, which needs an update, would never be checked.
     if (predict && nFree > 0 && model_.prescribedIncrement(t1).norm() == 0)
     {
-        if (evaluate(t1, r, false) && r.norm() <= newton_.forceTolerance*level())
+        vecX rt0;
+        if
+        (
+            evaluate(t1, r, false) && r.norm() <= newton_.forceTolerance*level()
+         && evaluate(t0, rt0, false)
+         && (r - rt0).norm() <= heldLoadTolerance*level()
+        )
         {
             report.residualNorms.push_back(r.norm());
             report.updateNorms.push_back(0);
@@ -348,13 +363,40 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     // Where the start state is out of balance (per block, largest entry)
     log_<< line << model_.iterationNote(r) << '\n';
 
+    // Energy reference of a predicted step: the work of the predicted
+    // increment on the tangent, dU_pred . K_ff dU_pred (for a step
+    // without prediction the reference dU^(1) . r^(0) is the same form,
+    // dU^(1) = K^-1 r^(0)); the first update of a good prediction is small
+    // and no reference for the step
+    const auto predictedWork = [&]()
+    {
+        const std::vector<int>& free = model_.freeDofs();
+        vecX v(free.size());
+        for (std::size_t i = 0; i < free.size(); ++i)
+        {
+            v(i) = predictedIncrement(free[i]);
+        }
+        return std::abs(v.dot(model_.Kff()*v));
+    };
+    double predictedEnergy = 0;
+
     // A step may start in equilibrium: a linear response reached by the
     // predictor, a steady stretch of a forming process, or a step with
-    // nothing to do (loads held, a dwell). Criterion: ||r0|| <= forceTol
-    // * L with L = max(||f_ext||, ||R||, F_c), F_c the force reference
-    // under which the committed state was accepted; L does not vanish
-    // when the increment does. No update is computed then (its energy
-    // would be round-off, and no energy ratio could be formed from it).
+    // nothing to do (loads held, a dwell). The force criterion: ||r0|| <=
+    // forceTol * L with L = max(||f_ext||, ||R||, F_c), F_c the force
+    // reference under which the committed state was accepted (L does not
+    // vanish when the increment does). The energy criterion needs an
+    // update, so the state is accepted with no iteration only where it
+    // can be judged without one:
+    // - a predicted state: the energy of the update from it (its
+    //   factorisation is iteration 1's if the state is not accepted)
+    //   against the predicted increment's work;
+    // - an unmoved state (no prediction, no prescribed increment) whose
+    //   loads did not change: the committed state, already accepted.
+    // Otherwise a small load increment would pass the force test with no
+    // iteration (the bulge's pressure control at forceTolerance 1e-3 fell
+    // behind its load step after step).
+    vecX firstUpdate;
     if (nFree > 0 && r0 <= newton_.forceTolerance*level())
     {
         // r0 is linearised in the prescribed increment: evaluate at the
@@ -366,15 +408,39 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         }
         const double r1 = r.norm();
         const double level1 = level();
+        bool accept = false;
+        double energyRatio = -1;
         if (r1 <= newton_.forceTolerance*level1)
         {
-            char note[160];
+            if (predicted)
+            {
+                predictedEnergy = predictedWork();
+                firstUpdate = solveLinear(r);
+                const double e = std::abs(firstUpdate.dot(r));
+                energyRatio = predictedEnergy > 0 ? e/predictedEnergy : 1;
+                accept =
+                    e == 0 || energyRatio <= newton_.energyTolerance;
+            }
+            else if (dUp.norm() == 0)
+            {
+                vecX rt0;
+                accept =
+                    evaluate(t0, rt0, false)
+                 && (r - rt0).norm() <= heldLoadTolerance*level1;
+            }
+        }
+        if (accept)
+        {
+            char note[200];
             std::snprintf
             (
                 note, sizeof(note),
                 "    equilibrium at the %s state: |r| %.3e <= forceTolerance"
-                " * %.3e\n",
-                predicted ? "predicted" : "start", r1, level1
+                " * %.3e%s\n",
+                predicted ? "predicted" : "start", r1, level1,
+                predicted
+              ? fmt(", energy of the update %.3e <= energyTolerance", energyRatio).c_str()
+              : ", loads unchanged"
             );
             log_<< note;
             model_.setForceLevel(level1);
@@ -391,21 +457,9 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         std::max(model_.externalForceNorm(), model_.reactionNorm());
     const bool nearEquilibrium =
         r0 <= std::sqrt(newton_.forceTolerance)*loadLevel;
-    // Energy reference of a predicted step: the work of the predicted
-    // increment on the tangent, dU_pred . K_ff dU_pred (for a step
-    // without prediction the reference dU^(1) . r^(0) is the same form,
-    // dU^(1) = K^-1 r^(0)); the first update of a good prediction is small
-    // and no reference for the step
-    double predictedEnergy = 0;
-    if (predicted && nFree > 0)
+    if (predicted && nFree > 0 && firstUpdate.size() == 0)
     {
-        const std::vector<int>& free = model_.freeDofs();
-        vecX v(free.size());
-        for (std::size_t i = 0; i < free.size(); ++i)
-        {
-            v(i) = predictedIncrement(free[i]);
-        }
-        predictedEnergy = std::abs(v.dot(model_.Kff()*v));
+        predictedEnergy = predictedWork();
     }
 
     if (nFree == 0)
@@ -436,7 +490,10 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     int limit = newton_.maxIterations;
     for (int i = 1; i <= limit; ++i)
     {
-        const vecX dU = solveLinear(rhs);
+        // (the first update may be computed already: the start state's
+        // energy test above)
+        const vecX dU =
+            i == 1 && firstUpdate.size() > 0 ? firstUpdate : solveLinear(rhs);
         if (newton_.checkTangent)
         {
             const tangentCheckResult c = checkTangentAlong(model_, t1, dU);

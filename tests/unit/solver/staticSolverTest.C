@@ -298,6 +298,65 @@ TEST(staticSolver, ExtrapolatingPredictorFindsLinearEquilibriumAtOnce)
 }
 
 
+TEST(staticSolver, HeldLoadIsAcceptedAtTheStartStateButASmallLoadIncrementIsSolved)
+{
+    // A linear bar (EA = 100) under a dead end load: ramped to 5 by t = 1,
+    // held to t = 1.5, then raised by 4e-4 of itself by t = 2, at
+    // forceTolerance 1e-3. The held steps end at their start state with no
+    // iteration. The raised steps' start states also pass the force test
+    // (each step adds 1e-4 of the load), but their loads changed: they
+    // must be solved. (A regression: the start state was accepted on the
+    // force test alone, the bar stayed at the held load's answer, and the
+    // bulge's pressure-controlled run fell behind its load at 1e-3.)
+    registerTestElements();
+    matX X(2, 2);
+    X << 0, 0, 1, 0;
+    feMesh mesh = trussMesh(X, {{0, 1}});
+    addLoadFaces(mesh, {0});
+    solidModel model
+    (
+        mesh, analysisType::planeStrain, {{"bar", barLaw(false, 100)}}
+    );
+    model.addConstraint({0}, 0);
+    model.addConstraint({0, 1}, 1);
+    // End force F(t) (the traction 2F on the unit bar: half reaches node 1)
+    const auto F = [](double t)
+    {
+        return t <= 1 ? 5*t : t <= 1.5 ? 5.0 : 5*(1 + 8e-4*(t - 1.5));
+    };
+    model.addTraction("load", [F](double t) { return vec3(2*F(t), 0, 0); });
+    model.finalise();
+    auto solver = linearSolver::New("cholmod");
+    newtonControls nc;
+    nc.extrapolate = true;
+    nc.forceTolerance = 1e-3;
+    nc.energyTolerance = 1e-6;
+    stepControls sc;
+    sc.deltaT = 0.125;
+    sc.maxDeltaT = 0.125;
+    sc.endTime = 2;
+    std::ostringstream log;
+    staticSolver s(model, *solver, nc, sc, log);
+    int held = 0, raised = 0;
+    s.run([&](const stepReport& r)
+    {
+        const double t = r.time;
+        // Each state at its own load (u = F/EA), not at an earlier one
+        EXPECT_NEAR(model.U()(2), F(t)/100, 1e-12*F(t))
+            << "t = " << t << ", iterations " << r.iterations;
+        if (t > 1 + 1e-12 && t < 1.5 + 1e-12)
+        {
+            ++held;
+            EXPECT_EQ(r.iterations, 0) << "held load, t = " << t;
+        }
+        if (t > 1.5 + 1e-12) ++raised;
+    });
+    EXPECT_EQ(held, 4);
+    EXPECT_EQ(raised, 4);
+    EXPECT_NE(log.str().find("equilibrium at the start state"), std::string::npos);
+}
+
+
 TEST(staticSolver, ReactionsAtThePredictedEquilibriumIncludeThePrescribedIncrement)
 {
     // Two linear bars (EA = 100, length 1 each) between a fixed node and
