@@ -230,14 +230,20 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     // control at forceTolerance 1e-3) a small increment would otherwise
     // pass the force test step after step with no iteration, and the
     // energy criterion, which needs an update, would never be checked.
-    if (predict && nFree > 0 && model_.prescribedIncrement(t1).norm() == 0)
+    // (r1: the residual of the state with the loads of t1)
+    const auto loadsHeld = [&](const vecX& r1)
     {
         vecX rt0;
+        return
+            evaluate(t0, rt0, false)
+         && (r1 - rt0).norm() <= heldLoadTolerance*level();
+    };
+    if (predict && nFree > 0 && model_.prescribedIncrement(t1).norm() == 0)
+    {
         if
         (
             evaluate(t1, r, false) && r.norm() <= newton_.forceTolerance*level()
-         && evaluate(t0, rt0, false)
-         && (r - rt0).norm() <= heldLoadTolerance*level()
+         && loadsHeld(r)
         )
         {
             report.residualNorms.push_back(r.norm());
@@ -423,10 +429,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             }
             else if (dUp.norm() == 0)
             {
-                vecX rt0;
-                accept =
-                    evaluate(t0, rt0, false)
-                 && (r - rt0).norm() <= heldLoadTolerance*level1;
+                accept = loadsHeld(r);
             }
         }
         if (accept)
