@@ -41,6 +41,15 @@ struct stepFailure : public numericalError
 // and of t1 differ by round-off only (relative to the force level)
 constexpr double heldLoadTolerance = 1e-12;
 
+// The round-off floors of the two acceptance rules below (a residual or
+// an energy that stagnates at round-off), relative to the force level and
+// to the first energy: the square roots of the tolerance, but never wider
+// than those of the default tolerances (1e-8, 1e-14). A looser tolerance
+// does not make a larger residual round-off: at forceTolerance 1e-3 the
+// square root would accept 3e-2 of the force level.
+constexpr double roundOffForceFloor = 1e-4;
+constexpr double roundOffEnergyFloor = 1e-7;
+
 } // namespace
 
 
@@ -600,7 +609,8 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
          && i > 1
          && energyRatio <= newton_.energyTolerance
          && rNorm > 0.5*rPrevNorm
-         && rNorm <= std::sqrt(newton_.forceTolerance)*ref;
+         && rNorm
+         <= std::min(std::sqrt(newton_.forceTolerance), roundOffForceFloor)*ref;
         // The converse floor: the force criterion holds with a tenfold
         // margin, |r| no longer decreases, and the energy ratio stalls
         // between sqrt(energyTol) and energyTol: the update is round-off
@@ -612,7 +622,8 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
          && i > 1
          && rNorm <= 0.1*newton_.forceTolerance*ref
          && rNorm > 0.5*rPrevNorm
-         && energyRatio <= std::sqrt(newton_.energyTolerance);
+         && energyRatio
+         <= std::min(std::sqrt(newton_.energyTolerance), roundOffEnergyFloor);
         if (roundOff)
         {
             log_<< "    force residual at round-off level (energy converged,"

@@ -341,6 +341,40 @@ TEST(staticSolver, HeldLoadIsAcceptedAtTheStartStateButASmallLoadIncrementIsSolv
 }
 
 
+TEST(staticSolver, LooseToleranceAcceptsNoStagnatingStepAsRoundOff)
+{
+    // A linear bar (EA = 100, F = 5) whose tangent is 10 times too stiff:
+    // each update does a tenth of the work, |r| falls by 0.9 per
+    // iteration and the energy ratio by 0.81. At forceTolerance 1e-3 /
+    // energyTolerance 1e-4 the energy criterion holds from iteration 45,
+    // where |r| is 9e-3 of the force level: above the force tolerance and
+    // no round-off. (A regression: the round-off rule's floor was
+    // sqrt(forceTolerance) times the level, 3e-2 at 1e-3, and accepted
+    // this state as "round-off"; the bulge's pressure-controlled run
+    // accepted a step at 1.4e-3 that way.) The step must reach the force
+    // tolerance, |r| <= 1e-3 of the level (10: load and reactions), that
+    // is u within 2e-3 of F/EA (observed 2.0e-3 after 59 iterations; the
+    // old rule stopped at 8.7e-3 after 45).
+    auto law = barLaw(false, 100);
+    std::static_pointer_cast<trussMaterial>(law)->tangentScale = 10;
+    solidModel model = pulledBar(5, law);
+    auto solver = linearSolver::New("cholmod");
+    newtonControls nc;
+    nc.lineSearch = false;
+    nc.forceTolerance = 1e-3;
+    nc.energyTolerance = 1e-4;
+    nc.maxIterations = 100;
+    stepControls sc;
+    sc.deltaT = 1;
+    std::ostringstream log;
+    staticSolver s(model, *solver, nc, sc, log);
+    s.run(nullptr);
+    EXPECT_NEAR(model.U()(2), 0.05, 3e-3*0.05) << log.str();
+    EXPECT_EQ(log.str().find("round-off level"), std::string::npos) << log.str();
+    EXPECT_GT(s.totalIterations(), 55);
+}
+
+
 TEST(staticSolver, ReactionsAtThePredictedEquilibriumIncludeThePrescribedIncrement)
 {
     // Two linear bars (EA = 100, length 1 each) between a fixed node and
