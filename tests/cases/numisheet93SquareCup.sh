@@ -1,12 +1,20 @@
 #!/usr/bin/env bash
 # The NUMISHEET'93 square cup tutorial (tutorials/numisheet93SquareCup:
-# the aluminium quarter cup, 30 x 30 MITC4, drawn 40 mm, tools released,
-# springback), run as it ships with its Allrun. Checks:
+# the aluminium quarter cup, 30 x 30 MITC4) with its Allrun:
+#
+#   tests/cases/numisheet93SquareCup.sh        CI: the tutorial's mesh, the
+#                                              punch stopped at 15 mm, the
+#                                              tools released there
+#   tests/cases/numisheet93SquareCup.sh -full  the tutorial as it ships (40
+#                                              mm, about 6 minutes)
+# Checks:
 #  - against the converged reference (tests/cases/numisheet93SquareCup.
 #    reference: the same case on the next finer mesh, 45 x 45, with
-#    provenance): draw-ins along x, y and the diagonal at 15 and 40 mm
-#    within 2 % (the convergence criterion), punch force within 1 %,
-#    extreme surface strains within 2 %;
+#    provenance): the draw-ins along x, y and the diagonal within 2 % (the
+#    tutorial's convergence criterion; observed 1.0 and 1.1 % at 15 mm,
+#    0.75 and 0.8 % at 40 mm) and the punch force within 1 % at 15 mm
+#    (-full: also at 40 mm, the largest force and the extreme surface
+#    strains within 2 %);
 #  - force control: the holder carries 19.6 kN (1e-9);
 #  - the square cup's pattern: draw-in along the axes > along the
 #    diagonal; x and y alike (r0 = 0.71 ~ r90 = 0.70: 1 %);
@@ -14,31 +22,64 @@
 #    surface strains (from the nodes' positions) and the thickness (the
 #    plane-stress condition at the points through it) of each element at
 #    the end of forming satisfy eps1 + eps2 + ln(t/t0) ~ 0 (mean over the
-#    elements below 5e-3, largest below 0.03; observed 2e-3 and 0.016:
-#    elastic volume change, centre against mean);
+#    elements below 5e-3, largest below 0.03; observed 2e-3 and 0.016 at
+#    40 mm: elastic volume change, centre against mean);
 #  - springback is computed: at t = 2 the released punch carries no
 #    force (the wall-time ratio springback / forming is reported, not
 #    asserted);
 #  - the plots exist (punchForce.png, formingLimit.png, thickness.png).
+# CI stops at 15 mm, where the reference has its first set of values, for
+# about a third of the full run's time (the brief: reduced tutorial runs
+# in the tests, the full ones in the tutorials).
 . "$(dirname "$0")/testFunctions"
 here=$(cd "$(dirname "$0")" && pwd)
+case ${1:-} in
+    '') full= ; end=0.375; at=15 ;;
+    -full) full=yes; end=1; at=40 ;;
+    *) echo "usage: $0 [-full]" >&2; exit 1 ;;
+esac
 c=$(caseCopy numisheet93SquareCup)
 summary() { summaryValue "$c" "$1"; }
+
+# CI: forming ends at t = 0.375 (15 mm) and the tools are released from
+# there; the formed cup's measures are taken at that time, the 40 mm
+# draw-ins dropped (every edit must apply: a renamed entry fails)
+if [ -z "$full" ]; then
+    python3 - "$c" <<'EOF' || fail "square cup: cannot stop the punch at 15 mm (case files changed?)"
+import re, sys
+c = sys.argv[1]
+p = c + '/constant/processSchedule'
+s = open(p).read()
+s, n = re.subn(r'(forming\s*\{\s*endTime\s+)1;', r'\g<1>0.375;', s)
+if n != 1: sys.exit(1)
+open(p, 'w').write(s)
+p = c + '/system/solidSolution'
+s = open(p).read()
+for name in ('drawInX40', 'drawInY40', 'drawInDiagonal40'):
+    s, n = re.subn(r'\n    %s\s*\{[^}]*\}' % name, '', s)
+    if n != 1: sys.exit(1)
+for name in ('holderForce', 'thicknessMin', 'majorStrainMax', 'minorStrainMin', 'cornerZFormed'):
+    s, n = re.subn(r'(\n    %s\s*\{[^}]*time) 1;' % name, r'\1 0.375;', s)
+    if n != 1: sys.exit(1)
+open(p, 'w').write(s)
+EOF
+fi
 
 if (cd "$c" && timeout 1800 ./Allrun > log.Allrun 2>&1) && [ -f "$c/postProcessing/summary" ]; then
     [ -f "$here/numisheet93SquareCup.reference" ] \
         || fail "numisheet93SquareCup.reference missing: its checks cannot run"
     while read -r name value tol; do
         case $name in ''|'#'*) continue ;; esac
+        [ -n "$full" ] || [[ $name == *15 ]] || continue
         checkClose "square cup $name vs the 45 x 45 mesh" "$(summary "$name")" "$value" "$tol"
     done < "$here/numisheet93SquareCup.reference"
     checkClose "square cup: the holder carries 19.6 kN" "$(summary holderForce)" 19600 1e-9
-    checkBetween "square cup: draw-in along the diagonal below that along x at 40 mm" \
-        "$(summary drawInDiagonal40)" 0 "$(summary drawInX40)"
-    checkClose "square cup: draw-in along y as along x (r0 ~ r90)" "$(summary drawInY40)" "$(summary drawInX40)" 0.01
+    checkBetween "square cup: draw-in along the diagonal below that along x at $at mm" \
+        "$(summary drawInDiagonal$at)" 0 "$(summary drawInX$at)"
+    checkClose "square cup: draw-in along y as along x (r0 ~ r90)" "$(summary drawInY$at)" "$(summary drawInX$at)" 0.01
     t0=$(foamDictionary -entry thickness -value "$c/constant/caseParameters")
-    read -r vmean vmax < <(paste <(formFieldValues "$c/1/blank/majorStrain") <(formFieldValues "$c/1/blank/minorStrain") \
-        <(formFieldValues "$c/1/blank/thickness") | awk -v t0="$t0" \
+    read -r vmean vmax < <(paste <(formFieldValues "$c/$end/blank/majorStrain") <(formFieldValues "$c/$end/blank/minorStrain") \
+        <(formFieldValues "$c/$end/blank/thickness") | awk -v t0="$t0" \
         'NF == 3 { s = $1 + $2 + log($3/t0); if (s < 0) s = -s; if (s > m) m = s; t += s; n++ }
          END { if (n) printf "%.4g %.4g\n", t/n, m }')
     checkBelow "square cup: plastic incompressibility, mean |eps1 + eps2 + ln(t/t0)|" "$vmean" 5e-3
