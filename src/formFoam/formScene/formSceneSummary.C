@@ -362,6 +362,8 @@ void Foam::formScene::recordSummary(scalar time, bool first)
         os << '\n';
     }
     os << time;
+    // one state for all entries: the shells' results computed once
+    for (const solidRegion& s : solids_) s.holdShellResults(true);
     for (summaryEntry& e : summary_)
     {
         sinceReference(e, time);
@@ -369,6 +371,7 @@ void Foam::formScene::recordSummary(scalar time, bool first)
         os << ' ' << v;
         updateEntry(e, time, v, first);
     }
+    for (const solidRegion& s : solids_) s.holdShellResults(false);
     os << '\n';
     os.flush();
     if (!os)

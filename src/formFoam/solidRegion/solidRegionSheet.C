@@ -128,7 +128,9 @@ std::vector<form::elementResult> Foam::solidRegion::shellResults
             << name_ << "' has no shell elements (elementType "
             << elementType_ << ")" << exit(FatalIOError);
     }
-    return model_->elementResults();
+    if (!holdShellResults_) return model_->elementResults();
+    if (heldShellResults_.empty()) heldShellResults_ = model_->elementResults();
+    return heldShellResults_;
 }
 
 
