@@ -31,31 +31,33 @@
 #    since 2026-11-27: the 2D reference's new step sequence and the
 #    shells' contact compliance).
 # 5. A straight hat section of the benchmark's 35 mm strip from shells
-#    (the shells case with -width 17.5 -across 3 -freeEdge: half the width
-#    with 3 elements across, the face z = 17.5 free, the same reduced mesh
+#    (the shells case with -width 17.5 -across 2 -freeEdge: half the width
+#    with 2 elements across, the face z = 17.5 free, the same reduced mesh
 #    along the blank): its middle section (z = 0, a symmetry plane)
 #    against the plane-strain strip of 4, the same build and mesh. Under
 #    load the middle of a 35 mm strip bent over R/t = 6.4 is in plane
 #    strain (the free edge's layer is about sqrt(R t) = 2 mm wide; the
 #    shells README's study: within 0.03 deg, 0.011 with 6 elements
-#    across). The two runs take different step sequences, and every
-#    number below scatters with the step sequence: the strip alone,
-#    rerun with the first deltaT 0.009, 0.01 and 0.011 and with the
-#    contact predictor of 2026-11-28, gave theta1Formed 90.48-90.67,
+#    across). Two elements across, not 3 (until 2026-11-29): 3 took 974 s
+#    of the suite's 30 minutes, 2 take about half; their discretisation
+#    error is in the bounds. The two runs take different step sequences,
+#    and every number below scatters with the step sequence: the strip
+#    alone, rerun with the first deltaT 0.009, 0.01 and 0.011 and with
+#    the contact predictor of 2026-11-28, gave theta1Formed 90.48-90.67,
 #    released theta1 91.49-92.23 and the thinnest element 0.7638-0.7728
 #    mm (shells README, "A straight hat section"). Bounds: the formed
-#    angles within 0.25 deg (that scatter, 0.18, plus the width's 0.03;
-#    observed 0.002 and 0.0006 deg on 2026-11-27, 0.095 and 0.007 with
-#    the contact predictor). The released angles within 1.0 deg: the
-#    step scatter, 0.74 deg, plus the width's discretisation, 0.25 deg
-#    (3 against 6 elements across: theta2 89.56 against 89.81; theta1
-#    0.02 deg); observed 0.12 and 0.16 deg, then 0.43 and 0.13. The wall
-#    curvature 1/rho within 1e-3 per mm: the step scatter of this nearly
-#    straight wall, 5.6e-4 per mm per halving of the step (../../
+#    angles within 0.25 deg (that scatter, 0.18, plus the width's 0.04
+#    with 2 across against 6); the released angles within 1.5 deg (the
+#    step scatter, 0.74 deg, plus the width's discretisation: 2 against 6
+#    elements across moved theta2 by 0.74 deg and theta1 by 0.43); the
+#    wall curvature 1/rho within 1.2e-3 per mm (the step scatter of this
+#    nearly straight wall, 5.6e-4 per mm per halving of the step (../../
 #    tutorials/numisheet93UChannel/README.md), plus the free edge's own
-#    effect, 3.8e-4 per mm with 6 elements across; observed 3.5e-4. The
-#    thinnest element within 2 % (its step scatter 1.2 %; observed
-#    0.05 %). README of the shells case: "A straight hat section".
+#    effect, 3.8e-4 per mm with 6 elements across, plus 2 against 6
+#    across, 2.1e-4); the thinnest element within 2 % (its step scatter
+#    1.2 %). Observed on 2026-11-29 (formFoam 9bac3f8): 0.13 and 0.007
+#    deg formed, 0.27 and 0.32 deg released, 1.8e-4 per mm, 0.02 %.
+#    README of the shells case: "A straight hat section".
 # Chattering detection is tested at kernel level (formKernelTests,
 # contactModel.chatteringIsReported) and shows in the U-channel logs as
 # cut-back steps naming the node.
@@ -217,10 +219,10 @@ strip=$c
 h=$(caseCopy numisheet93UChannel/shells)
 reducedShells "$h"
 if timeout 2400 "$here/../../tutorials/numisheet93UChannel/shells/Allrun" -case "$h" \
-       -width 17.5 -across 3 -freeEdge > "$h/log.Allrun" 2>&1 \
+       -width 17.5 -across 2 -freeEdge > "$h/log.Allrun" 2>&1 \
     && [ -f "$strip/postProcessing/summary" ]
 then
-    pass "U-channel hat section: 140 x 3 MITC4 over 17.5 mm, free edge," \
+    pass "U-channel hat section: 140 x 2 MITC4 over 17.5 mm, free edge," \
         "$(value "$h" steps) steps, $(value "$h" newtonIterationsPerStep) Newton its/step," \
         "$(value "$h" wallTime) s"
     for q in theta1Formed theta2Formed; do
@@ -229,10 +231,10 @@ then
     done
     for q in theta1 theta2; do
         checkBelow "U-channel hat section: |$q - the strip's| (deg, released)" \
-            "$(calc 'abs(v - r)' v="$(value "$h" $q)" r="$(value "$strip" $q)")" 1.0
+            "$(calc 'abs(v - r)' v="$(value "$h" $q)" r="$(value "$strip" $q)")" 1.5
     done
     checkBelow "U-channel hat section: |1/rho - the strip's| (1/mm)" \
-        "$(calc 'abs(1/v - 1/r)' v="$(value "$h" rho)" r="$(value "$strip" rho)")" 1e-3
+        "$(calc 'abs(1/v - 1/r)' v="$(value "$h" rho)" r="$(value "$strip" rho)")" 1.2e-3
     checkClose "U-channel hat section: thicknessMin vs the strip's" \
         "$(value "$h" thicknessMin)" "$(value "$strip" thicknessMin)" 0.02
 else
