@@ -228,9 +228,9 @@ fi
 #    0.004 %, 0.014 %).
 ale=$(caseCopy hydraulicBulge)
 hyd=$(caseCopy hydraulicBulge)
-for d in "$ale" "$hyd"; do
+for x in "$ale" "$hyd"; do
     (
-        cd "$d" || exit 1
+        cd "$x" || exit 1
         sed -i 's/^endTime .*/endTime 0.3;/' system/controlDict
         sed -i '/at (poleHeight 30)/d; /of (poleTopAt30/d' system/solidSolution
         # formFoam's default tolerances (the case's entries removed)
@@ -327,3 +327,6 @@ tryCase "fluid: summary 'at' never reached" \
 tryCase "fluid: summary type without a fluid" \
     "Unknown summary type 'fluidPressure'" \
     "sed -i 's/^regions .*/regions ( solid (blank) );/' constant/regionProperties"
+
+# the scratch copies (KEEP=1 keeps them)
+[ -n "${KEEP:-}" ] || rm -rf "$c" "${r:-}" "$d" "$p" "$base"

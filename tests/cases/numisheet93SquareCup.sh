@@ -27,7 +27,12 @@
 #  - springback is computed: at t = 2 the released punch carries no
 #    force (the wall-time ratio springback / forming is reported, not
 #    asserted);
-#  - the plots exist (punchForce.png, formingLimit.png, thickness.png).
+#  - the plots exist (punchForce.png, formingLimit.png, thickness.png,
+#    outline.png), and the blank's outline (postProcessing/outline.dat:
+#    the bottom face's points moved by pointD) agrees with the summary's
+#    draw-in on the x axis (the mid-surface node) within 0.1 mm (half the
+#    thickness times the flange edge's tilt; observed 0.016 at 40 mm on
+#    20 x 20).
 # CI stops at 15 mm, where the reference has its first set of values, for
 # about a third of the full run's time (the brief: reduced tutorial runs
 # in the tests, the full ones in the tutorials).
@@ -92,8 +97,14 @@ if (cd "$c" && timeout 1800 ./Allrun > log.Allrun 2>&1) && [ -f "$c/postProcessi
          "forming $(summary formingWallTime) s, springback $(summary springbackWallTime) s" \
          "(ratio $(calc 's/f' s="$(summary springbackWallTime)" f="$(summary formingWallTime)"))"
     [ -f "$c/punchForce.png" ] && [ -f "$c/formingLimit.png" ] && [ -f "$c/thickness.png" ] \
-        && pass "square cup plots written (punchForce.png, formingLimit.png, thickness.png)" \
+        && [ -f "$c/outline.png" ] \
+        && pass "square cup plots written (punchForce.png, formingLimit.png, thickness.png, outline.png)" \
         || fail "square cup plots missing in $c (see log.plot*)"
+    # the outline (mesh points moved by pointD) against the summary's
+    # draw-in (the mid-surface node): the flange edge on the x axis
+    checkBelow "square cup outline: |draw-in at (75, 0) - drawInX$at| (mm)" \
+        "$(awk -v d="$(summary drawInX$at)" '!/^#/ && $1 == 75 && $2 == 0 {
+               e = 75 - $3 - d; print (e < 0 ? -e : e); exit }' "$c/postProcessing/outline.dat")" 0.1
 else
     fail "square cup tutorial run (see $c/log.Allrun, $c/log.formFoam)"
     tail -15 "$c/log.formFoam" 2>/dev/null | sed 's/^/    | /'

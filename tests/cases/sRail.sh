@@ -28,7 +28,9 @@
 #    1e-14, of 4000 unknowns, where the order reads low; a wrong tangent
 #    or linear convergence gives about 1);
 #  - the plots exist (punchForce.png, formingLimit.png, thickness.png,
-#    springback.png).
+#    springback.png, outline.png), and the formed blank's outline
+#    (postProcessing/outline.dat, from the mesh points: an output of its
+#    own) is point symmetric (1e-5 mm; observed 2e-8).
 . "$(dirname "$0")/testFunctions"
 here=$(cd "$(dirname "$0")" && pwd)
 c=$(caseCopy sRail)
@@ -64,9 +66,22 @@ then
          "$(summary cutbacks) cutbacks, forming $(summary formingWallTime) s," \
          "springback $(summary springbackWallTime) s"
     [ -f "$c/punchForce.png" ] && [ -f "$c/formingLimit.png" ] && [ -f "$c/thickness.png" ] \
-        && [ -f "$c/springback.png" ] \
-        && pass "S-rail plots written (punchForce, formingLimit, thickness, springback)" \
+        && [ -f "$c/springback.png" ] && [ -f "$c/outline.png" ] \
+        && pass "S-rail plots written (punchForce, formingLimit, thickness, springback, outline)" \
         || fail "S-rail plots missing in $c (see log.plot*)"
+    # the blank's outline at the end of forming is point symmetric too:
+    # the point that starts at -(x0, y0) ends at -(x, y) (released, the
+    # springback pins are not symmetric: the part moves as a rigid body)
+    checkBelow "S-rail point symmetry of the formed blank's outline (mm)" \
+        "$(awk 'function f(v,  s) { s = sprintf("%.3f", v); return s == "-0.000" ? "0.000" : s }
+             !/^#/ && NF >= 4 { k = f($1) " " f($2); n++; x[k] = $3; y[k] = $4 }
+             END { if (n < 4) { print "nan"; exit }
+                   for (k in x) { split(k, p, " ")
+                       m = f(-p[1]) " " f(-p[2])
+                       if (!(m in x)) { print "nan"; exit }
+                       d = x[k] + x[m]; if (d < 0) d = -d; if (d > e) e = d
+                       d = y[k] + y[m]; if (d < 0) d = -d; if (d > e) e = d }
+                   printf "%.3g\n", e }' "$c/postProcessing/outline.dat")" 1e-5
 else
     fail "S-rail tutorial run (see $c/log.Allrun, $c/log.formFoam)"
     tail -15 "$c/log.formFoam" 2>/dev/null | sed 's/^/    | /'
