@@ -36,6 +36,18 @@ constexpr double secondSeriesWidth = 0.1;
 //- Highest power n of the series of f[a,b,c] (terms n = 2..nSeries)
 constexpr int nSeries = 20;
 
+//- The series' coefficients (-1)^(n-1)/n, n = 0..nSeries (entries 0 and 1
+//  unused), rounded as the division itself
+struct seriesCoefficients
+{
+    double c[nSeries + 1];
+    constexpr seriesCoefficients() : c()
+    {
+        for (int n = 2; n <= nSeries; ++n) c[n] = (n % 2 ? 1.0 : -1.0)/n;
+    }
+};
+constexpr seriesCoefficients series;
+
 //- Voigt position of the index pair (i, j): xx yy zz xy yz xz
 constexpr int voigtIndex[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
 
@@ -90,7 +102,7 @@ double secondDividedDifferenceSorted
         h1 *= u0;
         h2 = h1 + u1*h2;
         h3 = h2 + u2*h3;
-        sum += (n % 2 ? 1.0 : -1.0)/n*h3;
+        sum += series.c[n]*h3;
         power *= U;
         if (0.5*n*power < 1e-20) break;
     }

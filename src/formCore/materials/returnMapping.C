@@ -8,6 +8,7 @@ Description
     The equations and their derivation are in returnMapping.H.
 \*---------------------------------------------------------------------------*/
 #include "returnMapping.H"
+#include "returnMappingDetail.H"
 #include "formError.H"
 #include <cmath>
 #include <limits>
@@ -16,35 +17,12 @@ Description
 namespace form
 {
 
+using namespace returnMappingDetail;
+
 namespace
 {
 
 const double inf = std::numeric_limits<double>::infinity();
-const double machEps = std::numeric_limits<double>::epsilon();
-
-//- A plastic step has converged when |gs| <= tolYield sigmaY (header). The
-//  roundoff floor of gs is ~1e-14 sigmaY at 100 sigmaY trial stresses.
-const double tolYield = 1e-11;
-
-//- Largest |gs| accepted when the Newton correction of dgamma is at machine
-//  precision (extreme trial stresses, see update)
-const double tolYieldFloor = 1e-9;
-
-//- A trial state within onSurface sigmaY above the yield surface takes
-//  the elastic tangent (its stress is still returned: continuous, so the
-//  plane-stress iteration and the residual see no jump): the committed
-//  state re-evaluated (a step's first Newton iterate without a
-//  predictor, e.g. a tool release) lies on the surface only to the
-//  return mapping's tolerance (tolYieldFloor) and round-off, where the
-//  elastic-plastic tangent would be taken by chance of the last bit; the
-//  elastic one is the tangent of unloading, and a loading increment
-//  leaves the band at once (1e-8 sigmaY is an elastic strain of about
-//  1e-11)
-const double onSurface = 1e-8;
-
-//- Newton iterations on g; bisection alone would reach machine precision
-//  on the bracket in about 50
-const int maxOuter = 100;
 
 //- Damped Newton iterations of the inner (non-quadratic) problem
 const int maxInner = 50;
@@ -57,16 +35,6 @@ const parameterSpec CSpec
     {"C", 0, inf, true, false, "kinematic hardening modulus"};
 const parameterSpec gammaSpec
     {"gamma", 0, inf, true, false, "Armstrong-Frederick recall coefficient"};
-
-//- Diagonals of S (engineering -> tensor components) and W = S^-1
-const vec6 Sv = (vec6() << 1, 1, 1, 0.5, 0.5, 0.5).finished();
-const vec6 Wv = (vec6() << 1, 1, 1, 2, 2, 2).finished();
-
-//- |s|_W = sqrt(s:s) of a stress-like Voigt vector
-double normW(const vec6& s)
-{
-    return std::sqrt(s.dot(Wv.cwiseProduct(s)));
-}
 
 } // anonymous namespace
 
@@ -158,15 +126,20 @@ void plasticity::init()
     }
 
     // psi = phi^2/2 has the constant Hessian n n^T + phi d2phi = A for a
-    // quadratic phi; evaluate it at any non-hydrostatic stress
-    hessPsiQuadratic_.setZero();
+    // quadratic phi; evaluate it at any non-hydrostatic stress, and its
+    // generalised eigenbasis with respect to W (header)
+    A_.setZero();
+    V_.setZero();
+    mu_.setZero();
     if (yield_->quadratic())
     {
         vec6 x;
         x << 2, -1, -1, 1, 1, 1;
         const double phi = yield_->value(x);
         const vec6 n = yield_->gradient(x);
-        hessPsiQuadratic_ = n*n.transpose() + phi*yield_->hessian(x);
+        A_ = n*n.transpose() + phi*yield_->hessian(x);
+        A_ = 0.5*(A_ + A_.transpose()).eval();
+        initEigenbasis();
     }
 }
 
@@ -182,14 +155,6 @@ bool plasticity::solveInner
 ) const
 {
     const mat6 W = Wv.asDiagonal();
-
-    if (yield_->quadratic())
-    {
-        // (W + t A) xi = W xiHat: Pi_t is quadratic, one solve is exact
-        K.compute(W + t*hessPsiQuadratic_);
-        xi = K.solve(Wv.cwiseProduct(xiHat));
-        return xi.allFinite();
-    }
 
     // Damped Newton on the strongly convex
     //     Pi(x) = 1/2 (x - xiHat).W.(x - xiHat) + t phi(x)^2/2,
@@ -272,6 +237,14 @@ bool plasticity::update
         dEp.setZero();
         return true;
     }
+    if (yield_->quadratic())
+    {
+        return updateQuadratic
+        (
+            sTr, syN, fTr, committed, trial, stressDev, tangentDev, dEp,
+            iterations
+        );
+    }
 
     // Scaled residual gs(dgamma) = (1 + t n.S.n) g and its derivative;
     // xi: in warm start, out xi(dgamma). With xiHat = xi + t S grad psi,
@@ -311,44 +284,18 @@ bool plasticity::update
 
     // Bracket (0, hi) with gs(0) > 0 > gs(hi) (header)
     const double Xi = normW(sTr) + normW(betaN);
-    double lo = 0;
-    double hi = 1.001*Xi*Xi/(2*G_*syN);
-
-    double x = 0, gs = 0, dgs = 0;
+    const double hi = 1.001*Xi*Xi/(2*G_*syN);
     vec6 xi = sTr - betaN;
-    if (!evaluate(x, xi, gs, dgs)) return false;
-
-    bool converged = false;
+    double x = 0;
     int it = 0;
-    while (it < maxOuter)
-    {
-        ++it;
-        double xNew = x - gs/dgs;
-        if (!(dgs < 0) || !(xNew > lo && xNew < hi))
+    const bool converged = solveConsistency
+    (
+        [&](double dgamma, double& gs, double& dgs)
         {
-            xNew = 0.5*(lo + hi);
-        }
-        x = xNew;
-        if (!evaluate(x, xi, gs, dgs)) return false;
-        if (std::abs(gs) <= tolYield*sy)
-        {
-            converged = true;
-            break;
-        }
-        // Root resolved to machine precision in dgamma while |gs| sits on
-        // its roundoff floor (which grows like the square of the trial
-        // stress ratio for anisotropic phi): accept, the answer cannot be
-        // improved; the loose bound rejects a spurious small step
-        if (dgs < 0 && std::abs(gs/dgs) <= 8*machEps*x
-         && std::abs(gs) <= tolYieldFloor*sy)
-        {
-            converged = true;
-            break;
-        }
-        if (gs > 0) lo = x;
-        else hi = x;
-        if (hi - lo <= 4*machEps*hi) break;      // bracket exhausted
-    }
+            return evaluate(dgamma, xi, gs, dgs);
+        },
+        sy, hi, x, it
+    );
     if (iterations) *iterations = it;
     if (!converged) return false;
 
