@@ -598,10 +598,16 @@ std::string Foam::ALENavierStokes::describe() const
     if (interface_)
     {
         label n = 0;
-        for (const auto& c : colours_) n += label(c.size());
-        os  << "\nmesh derivative: central differences over " << n
-            << " moving points in " << colours_.size() << " colours ("
-            << 4*colours_.size() << " fluid evaluations per Newton iteration)";
+        for (label u = 0; u < interface_->motionUnits().size(); ++u)
+        {
+            for (label c = 0; c < 2; ++c)
+            {
+                n += interface_->unitKind(u, c) != fluidSolidInterface::fixedUnit;
+            }
+        }
+        os  << "\nmesh derivative: exact (sparse forward-mode automatic"
+            << " differentiation) with respect to " << n
+            << " point coordinates, one evaluation per Newton iteration";
     }
     return os.str();
 }

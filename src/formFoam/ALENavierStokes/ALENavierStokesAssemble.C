@@ -2,15 +2,15 @@
   formFoam: implicit finite-element forming with fluid-structure interaction
 -------------------------------------------------------------------------------
 Description
-    ALENavierStokes: the assembly of the fluid block's residual and its
-    derivatives with respect to the fluid unknowns (ALENavierStokes.H has
-    the equations).
+    ALENavierStokes: the assembly of the fluid block's residual
+    (ALENavierStokesResidual.H, here instantiated for plain numbers) and
+    of its derivatives with respect to the fluid unknowns, the Newton
+    matrix, written by hand (ALENavierStokes.H has the equations).
 \*---------------------------------------------------------------------------*/
-#include "ALENavierStokes.H"
+#include "ALENavierStokesResidual.H"
 #include "wallClock.H"
 #include "formError.H"
 #include "wedgeFvPatch.H"
-#include "mathematicalConstants.H"
 
 namespace
 {
@@ -26,17 +26,6 @@ struct stencilEntry
 
 using stencil = std::vector<stencilEntry>;
 
-//- The representation of a boundary face value and normal gradient of the
-//  velocity as affine maps of the cell velocity:
-//      u_b = T u_P + c,   snGrad_b = Ts u_P + cs
-struct faceMap
-{
-    tensor T = Zero;
-    vector c = Zero;
-    tensor Ts = Zero;
-    vector cs = Zero;
-};
-
 } // anonymous namespace
 
 
@@ -48,29 +37,49 @@ void Foam::ALENavierStokes::assemble
     std::vector<interfaceEntry>* KI
 )
 {
-    const label nC = mesh_.nCells();
+    ALEGeometry<scalar> g;
+    g.fromMesh(mesh_);
+    ALEResidual<scalar> res;
+    residual(g, std::vector<scalar>(Fm_.begin(), Fm_.end()), res);
+    r = Eigen::Map<const form::vecX>(res.r.data(), res.r.size());
+    const label nI = mesh_.nInternalFaces();
+    Fb_.setSize(mesh_.nFaces() - nI);
+    Fw_.setSize(Fb_.size());
+    forAll(Fb_, b)
+    {
+        Fb_[b] = res.F[nI + b];
+        Fw_[b] = res.Fw[b];
+    }
+    scale_ = res.scale;
+    if (K) assembleMatrix(g, res.F, off, *K, KI);
+}
+
+
+void Foam::ALENavierStokes::assembleMatrix
+(
+    const ALEGeometry<scalar>& g,
+    const std::vector<scalar>& Fface,
+    label off,
+    std::vector<triplet>& Kt,
+    std::vector<interfaceEntry>* KI
+) const
+{
+    std::vector<triplet>* K = &Kt;
+    const label nC = mesh_.nCells(), nI = mesh_.nInternalFaces();
     const scalar s = depth_;
     const scalar rho = set_.rho, mu = set_.mu;
     const scalar rK = set_.incompressible ? 0 : 1/set_.bulkModulus;
     const auto m = [&](scalar p) { return rK > 0 ? Foam::exp(p*rK) : 1.0; };
-    r.setZero(x_.size());
-    Fb_.setSize(mesh_.nFaces() - mesh_.nInternalFaces());
-    Fb_ = 0;
-    Fw_.setSize(Fb_.size());
-    Fw_ = Zero;
 
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
-    const surfaceVectorField& Sf = mesh_.Sf();
-    const surfaceScalarField& magSf = mesh_.magSf();
-    const surfaceScalarField& w = mesh_.weights();
-    const surfaceScalarField& dc = mesh_.nonOrthDeltaCoeffs();
-    const surfaceVectorField& kv = mesh_.nonOrthCorrectionVectors();
-    const volVectorField& C = mesh_.C();
-    const scalarField& V = mesh_.V();
-
-    // Magnitudes of the terms per cell (the residual scale)
-    scalarField aM(nC, 0), aC(nC, 0);
+    const std::vector<vector>& Sf = g.Sf;
+    const std::vector<scalar>& magSf = g.magSf;
+    const std::vector<scalar>& w = g.w;
+    const std::vector<scalar>& dc = g.dc;
+    const std::vector<vector>& kv = g.kv;
+    const std::vector<vector>& C = g.C;
+    const std::vector<scalar>& V = g.V;
 
     // Current cell values
     vectorField u(nC);
@@ -81,16 +90,10 @@ void Foam::ALENavierStokes::assemble
         p[c] = x_(ip(c));
     }
 
-    // Residual and Jacobian helpers (momentum residual -M, mass +C;
+    // Jacobian helpers (momentum residual -M, mass +C;
     // K = -dr/dq = [dM/dq; -dC/dq])
-    const auto addM = [&](label P, const vector& v)
-    {
-        for (label k = 0; k < D_; ++k) r(iu(P, k)) -= s*v[cmp_[k]];
-    };
-    const auto addC = [&](label P, scalar c) { r(ip(P)) += s*c; };
     const auto jMu = [&](label P, label Q, const tensor& A)
     {
-        if (!K) return;
         for (label k = 0; k < D_; ++k)
         {
             for (label l = 0; l < D_; ++l)
@@ -105,7 +108,6 @@ void Foam::ALENavierStokes::assemble
     };
     const auto jMp = [&](label P, label Q, const vector& g)
     {
-        if (!K) return;
         for (label k = 0; k < D_; ++k)
         {
             const scalar v = g[cmp_[k]];
@@ -114,7 +116,6 @@ void Foam::ALENavierStokes::assemble
     };
     const auto jCu = [&](label P, label Q, const vector& b)
     {
-        if (!K) return;
         for (label l = 0; l < D_; ++l)
         {
             const scalar v = b[cmp_[l]];
@@ -123,64 +124,11 @@ void Foam::ALENavierStokes::assemble
     };
     const auto jCp = [&](label P, label Q, scalar e)
     {
-        if (K && e != 0) K->emplace_back(off + ip(P), off + ip(Q), -s*e);
+        if (e != 0) K->emplace_back(off + ip(P), off + ip(Q), -s*e);
     };
 
-    // Boundary face maps of the velocity and pressure values
-    List<List<faceMap>> bmap(mesh_.boundary().size());
-    forAll(mesh_.boundary(), patchi)
-    {
-        const fvPatch& fp = mesh_.boundary()[patchi];
-        List<faceMap>& fm = bmap[patchi];
-        fm.setSize(fp.size());
-        const velocityBC bc = uBC_[patchi];
-        if (bc == velocityBC::empty) continue;
-        const scalarField& dcb = fp.deltaCoeffs();
-        const vectorField nf(fp.nf());
-        forAll(fp, i)
-        {
-            faceMap& f = fm[i];
-            switch (bc)
-            {
-                case velocityBC::fixedValue:
-                    f.c = uFixed_[patchi][i];
-                    f.Ts = -dcb[i]*tensor(I);
-                    f.cs = dcb[i]*uFixed_[patchi][i];
-                    break;
-                case velocityBC::interface:
-                {
-                    const vector& ub = uInterface_
-                    [
-                        interfaceFace_[fp.start() + i - mesh_.nInternalFaces()]
-                    ];
-                    f.c = ub;
-                    f.Ts = -dcb[i]*tensor(I);
-                    f.cs = dcb[i]*ub;
-                    break;
-                }
-                case velocityBC::zeroGradient:
-                    f.T = I;
-                    break;
-                case velocityBC::slip:
-                    f.T = I - sqr(nf[i]);
-                    f.Ts = -dcb[i]*sqr(nf[i]);
-                    break;
-                case velocityBC::wedge:
-                {
-                    const wedgeFvPatch& wp = refCast<const wedgeFvPatch>(fp);
-                    f.T = wp.faceT();
-                    f.Ts = 0.5*dcb[i]*(wp.cellT() - tensor(I));
-                    break;
-                }
-                default:
-                    break;
-            }
-        }
-    }
-    const auto pFace = [&](label patchi, label i, label P)
-    {
-        return pFixed_[patchi] ? pFixedValue_[patchi][i] : p[P];
-    };
+    // Boundary face maps of the velocity values
+    const std::vector<ALEFaceMap<scalar>> bmap = boundaryMaps(g);
 
     // Gauss gradient stencils (internal faces) and the boundary parts:
     // grad(phi)_P = sum_Q G_PQ phi_Q + boundary terms
@@ -193,12 +141,10 @@ void Foam::ALENavierStokes::assemble
         G[N].push_back({P, -w[f]*Sf[f]/V[N]});
         G[N].push_back({N, -(1 - w[f])*Sf[f]/V[N]});
     }
-    // Pressure gradient: stencil with the boundary faces of unfixed p,
-    // and the constant part from fixed pressures
+    // Pressure gradient: stencil with the boundary faces of unfixed p
     std::vector<stencil> Gp(G);
-    vectorField gp0(nC, Zero);
-    // Velocity gradient: boundary parts sum_b S_b (T u_P + c)/V per cell
-    List<DynamicList<label>> cellBFaces(nC);   // (patch, face) pairs packed
+    // The boundary faces of each cell
+    List<DynamicList<label>> cellBFaces(nC);
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& fp = mesh_.boundary()[patchi];
@@ -207,37 +153,17 @@ void Foam::ALENavierStokes::assemble
         forAll(fp, i)
         {
             const label P = fc[i];
-            const vector& Sb = Sf.boundaryField()[patchi][i];
-            if (pFixed_[patchi]) gp0[P] += pFixedValue_[patchi][i]*Sb/V[P];
-            else Gp[P].push_back({P, Sb/V[P]});
-            cellBFaces[P].append(patchi);
-            cellBFaces[P].append(i);
-        }
-    }
-    vectorField gradP(gp0);
-    tensorField gradU(nC, Zero);
-    for (label P = 0; P < nC; ++P)
-    {
-        for (const stencilEntry& e : Gp[P]) gradP[P] += e.coeff*p[e.cell];
-        for (const stencilEntry& e : G[P]) gradU[P] += e.coeff*u[e.cell];
-        const DynamicList<label>& bf = cellBFaces[P];
-        for (label j = 0; j < bf.size(); j += 2)
-        {
-            const faceMap& f = bmap[bf[j]][bf[j + 1]];
-            const vector& Sb = Sf.boundaryField()[bf[j]][bf[j + 1]];
-            gradU[P] += Sb*((f.T & u[P]) + f.c)/V[P];
+            if (!pFixed_[patchi]) Gp[P].push_back({P, Sf[fp.start() + i]/V[P]});
+            cellBFaces[P].append(fp.start() + i);
         }
     }
     // d(k . gradU_P)/du_P from the boundary faces of P
     const auto boundaryGradT = [&](label P, const vector& k)
     {
         tensor A = Zero;
-        const DynamicList<label>& bf = cellBFaces[P];
-        for (label j = 0; j < bf.size(); j += 2)
+        for (const label f : cellBFaces[P])
         {
-            const faceMap& f = bmap[bf[j]][bf[j + 1]];
-            const vector& Sb = Sf.boundaryField()[bf[j]][bf[j + 1]];
-            A += (k & Sb)/V[P]*f.T;
+            A += (k & Sf[f])/V[P]*bmap[f - nI].A;
         }
         return A;
     };
@@ -250,15 +176,11 @@ void Foam::ALENavierStokes::assemble
         label P, label N, const vector& k, scalar c, label X
     )
     {
-        const DynamicList<label>& bf = cellBFaces[X];
-        for (label j = 0; j < bf.size(); j += 2)
+        for (const label f : cellBFaces[X])
         {
-            if (uBC_[bf[j]] != velocityBC::interface) continue;
-            const fvPatch& fp = mesh_.boundary()[bf[j]];
-            const label b =
-                interfaceFace_[fp.start() + bf[j + 1] - mesh_.nInternalFaces()];
-            const vector& Sb = Sf.boundaryField()[bf[j]][bf[j + 1]];
-            const tensor A = c*(k & Sb)/V[X]*tensor(I);
+            const label b = interfaceFace_[f - nI];
+            if (b < 0) continue;
+            const tensor A = c*(k & Sf[f])/V[X]*tensor(I);
             KI->push_back({P, b, -A});
             KI->push_back({N, b, A});
         }
@@ -277,44 +199,12 @@ void Foam::ALENavierStokes::assemble
         const scalar wf = w[f];
         const vector d = C[N] - C[P];
         const scalar pbar = wf*p[P] + (1 - wf)*p[N];
-        const vector ubar = wf*u[P] + (1 - wf)*u[N];
         const scalar Df = wf*rAV_[P] + (1 - wf)*rAV_[N];
         const scalar coef = Df*magSf[f]/mag(d);
-        const vector gbar = wf*gradP[P] + (1 - wf)*gradP[N];
-        const scalar cRC = coef*(p[N] - p[P] - (gbar & d));
-        const scalar F = (ubar & S) - cRC - Fm_[f];
+        const scalar F = Fface[f];
         const scalar lam = upwind_ ? (F >= 0 ? 1.0 : 0.0) : wf;
         const vector uc = lam*u[P] + (1 - lam)*u[N];
-
-        // Momentum: convection, pressure, viscous
-        const vector snGrad =
-            dc[f]*(u[N] - u[P])
-          + (corrected_ ? (kv[f] & (wf*gradU[P] + (1 - wf)*gradU[N])) : vector::zero);
-        const vector visc = -mu*magSf[f]*snGrad;
-        const vector pres = pbar*S;
-        if (steady_)
-        {
-            addM(P, rho*F*(uc - u[P]) + pres + visc);
-            addM(N, -rho*F*(uc - u[N]) - pres - visc);
-        }
-        else
-        {
-            addM(P, rho*F*uc + pres + visc);
-            addM(N, -rho*F*uc - pres - visc);
-        }
-        // Mass
         const scalar mf = m(pbar);
-        addC(P, mf*F);
-        addC(N, -mf*F);
-        {
-            const scalar a = mag(rho*F*uc) + mag(pres) + mag(visc);
-            aM[P] += a;
-            aM[N] += a;
-            aC[P] += mag(mf*F) + mag(ubar & S);
-            aC[N] += mag(mf*F) + mag(ubar & S);
-        }
-
-        if (!K) continue;
 
         // dF/du and dF/dp
         const vector dFduP = wf*S, dFduN = (1 - wf)*S;
@@ -421,40 +311,30 @@ void Foam::ALENavierStokes::assemble
         const velocityBC bc = uBC_[patchi];
         if (bc == velocityBC::empty) continue;
         const labelUList& fc = fp.faceCells();
-        const scalarField& dcb = fp.deltaCoeffs();
-        const vectorField delta(fp.delta());
         const bool pfix = pFixed_[patchi];
         forAll(fp, i)
         {
+            const label f = fp.start() + i, b = f - nI;
             const label P = fc[i];
-            const faceMap& fm = bmap[patchi][i];
-            const vector& S = Sf.boundaryField()[patchi][i];
-            const scalar magS = magSf.boundaryField()[patchi][i];
-            const scalar pb = pFace(patchi, i, P);
-            const vector ub = (fm.T & u[P]) + fm.c;
+            const ALEFaceMap<scalar>& fm = bmap[b];
+            const vector& S = Sf[f];
+            const scalar magS = magSf[f];
+            const scalar pb = pfix ? pFixedValue_[patchi][i] : p[P];
+            const vector ub = (fm.A & u[P]) + fm.c;
 
             // Pressure and viscous forces
-            const vector wallForce = pb*S - mu*magS*((fm.Ts & u[P]) + fm.cs);
-            addM(P, wallForce);
-            Fw_[fp.start() + i - mesh_.nInternalFaces()] = wallForce;
-            aM[P] += mag(pb*S) + mag(mu*magS*((fm.Ts & u[P]) + fm.cs));
-            if (K)
-            {
-                if (!pfix) jMp(P, P, S);
-                jMu(P, P, -mu*magS*fm.Ts);
-            }
-            // No flux through wedge faces (the rotated cell velocity lies
-            // in the wedge plane, which moves within itself), nor through
-            // the interface (the fluid moves with the solid's wall: the
-            // flux relative to the face is zero)
+            if (!pfix) jMp(P, P, S);
+            jMu(P, P, -mu*magS*fm.As);
+            // No flux through wedge faces nor the interface
             if (bc == velocityBC::wedge) continue;
             if (bc == velocityBC::interface)
             {
                 if (KI)
                 {
-                    const label b =
-                        interfaceFace_[fp.start() + i - mesh_.nInternalFaces()];
-                    KI->push_back({P, b, -mu*magS*dcb[i]*tensor(I)});
+                    KI->push_back
+                    (
+                        {P, interfaceFace_[b], -mu*magS*g.dcb[b]*tensor(I)}
+                    );
                 }
                 continue;
             }
@@ -462,37 +342,22 @@ void Foam::ALENavierStokes::assemble
             // Flux relative to the face; Rhie-Chow against a fixed
             // pressure at an outlet
             const bool rc = bc == velocityBC::zeroGradient && pfix;
-            scalar cRC = 0, coef = 0;
-            if (rc)
-            {
-                coef = rAV_[P]*magS*dcb[i];
-                cRC = coef*(pb - p[P] - (gradP[P] & delta[i]));
-            }
-            const scalar F = (ub & S) - cRC - Fm_[fp.start() + i];
-            Fb_[fp.start() + i - mesh_.nInternalFaces()] = F;
+            const scalar coef = rc ? rAV_[P]*magS*g.dcb[b] : 0;
+            const scalar F = Fface[f];
             const vector uconv = steady_ ? ub - u[P] : ub;
-            addM(P, rho*F*uconv);
-            // The injection prescribes mass: its volume is at the
-            // reference density (as the hydrostatic model's)
-            const bool injection =
-                set_.injectedVolume && set_.inletPatches.found(fp.name());
-            const scalar mb = injection ? 1.0 : m(pb);
-            addC(P, mb*F);
-            aM[P] += mag(rho*F*ub);
-            aC[P] += mag(mb*F) + mag(ub & S);
-
-            if (!K) continue;
-            const vector dFdu = S & fm.T;
+            const bool inj = injection(fp.name());
+            const scalar mb = inj ? 1.0 : m(pb);
+            const vector dFdu = S & fm.A;
             dFdp.clear();
             if (rc)
             {
                 dFdp.push_back({P, coef});
                 for (const stencilEntry& e : Gp[P])
                 {
-                    dFdp.push_back({e.cell, coef*(delta[i] & e.coeff)});
+                    dFdp.push_back({e.cell, coef*(g.delta[b] & e.coeff)});
                 }
             }
-            const tensor Tc = steady_ ? fm.T - tensor(I) : fm.T;
+            const tensor Tc = steady_ ? fm.A - tensor(I) : fm.A;
             jMu(P, P, rho*(uconv*dFdu + F*Tc));
             for (const auto& e : dFdp)
             {
@@ -500,7 +365,7 @@ void Foam::ALENavierStokes::assemble
                 jCp(P, e.first, mb*e.second);
             }
             jCu(P, P, mb*dFdu);
-            if (!pfix && !injection) jCp(P, P, mb*rK*F);
+            if (!pfix && !inj) jCp(P, P, mb*rK*F);
         }
     }
 
@@ -508,17 +373,9 @@ void Foam::ALENavierStokes::assemble
     const scalar rdt = 1/dt_;
     for (label P = 0; P < nC; ++P)
     {
-        if (!steady_)
-        {
-            addM(P, rho*(V[P]*u[P] - V0_[P]*cellU(x0_, P))*rdt);
-            jMu(P, P, rho*V[P]*rdt*tensor(I));
-        }
-        const scalar p0 = x0_(ip(P));
-        addC(P, (m(p[P])*V[P] - m(p0)*V0_[P])*rdt);
+        if (!steady_) jMu(P, P, rho*V[P]*rdt*tensor(I));
         jCp(P, P, m(p[P])*rK*V[P]*rdt);
-        aC[P] += mag(m(p[P])*V[P] - m(p0)*V0_[P])*rdt;
     }
-    scale_ = s*Foam::sqrt(sumSqr(aM) + sumSqr(aC));
 }
 
 

@@ -408,6 +408,9 @@ void Foam::formScene::run()
         << "      mesh motion   "
         << (fluid_ ? fluid_->meshMotionTime() : scalar(0))
         << " (part of fluid)" << nl
+        << "      mesh derivative "
+        << (fluid_ ? fluid_->meshDerivativeTime() : scalar(0))
+        << " (part of fluid)" << nl
         << "    factorisation   " << t.factorisation << nl
         << "    solve           " << t.solve << nl
         << "    factorisations  " << t.factorisations << " (count)" << nl

@@ -20,6 +20,7 @@ Description
 \*---------------------------------------------------------------------------*/
 #include "ALENavierStokes.H"
 #include "scratchCase.H"
+#include "fluidTestMeshes.H"
 #include "../fdCheck.H"
 #include <gtest/gtest.h>
 #include <random>
@@ -29,31 +30,6 @@ using namespace form::test;
 
 namespace
 {
-
-// A skewed quadrilateral of 4 x 3 cells (non-orthogonal faces), 0.1 deep
-const std::string skewedMesh =
-    "vertices ((0 0 0) (2 0.3 0) (1.7 1.4 0) (0.2 1 0)"
-    " (0 0 0.1) (2 0.3 0.1) (1.7 1.4 0.1) (0.2 1 0.1));\n"
-    "blocks (hex (0 1 2 3 4 5 6 7) (4 3 1) simpleGrading (1 1 1));\n"
-    "boundary (\n"
-    " inlet { type patch; faces ((0 4 7 3)); }\n"
-    " outlet { type patch; faces ((1 2 6 5)); }\n"
-    " walls { type wall; faces ((0 1 5 4) (3 7 6 2)); }\n"
-    " frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); }\n);\n";
-
-const std::string channelU =
-    "internalField uniform (0 0 0);\nboundaryField {\n"
-    " inlet { type fixedValue; value uniform (1 0.2 0); }\n"
-    " outlet { type zeroGradient; }\n"
-    " walls { type noSlip; }\n"
-    " frontAndBack { type empty; }\n}\n";
-
-const std::string channelP =
-    "internalField uniform 0;\nboundaryField {\n"
-    " inlet { type zeroGradient; }\n"
-    " outlet { type fixedValue; value uniform 0.5; }\n"
-    " walls { type zeroGradient; }\n"
-    " frontAndBack { type empty; }\n}\n";
 
 // Dense Newton matrix of the fluid alone (no solid: indices from 0)
 matX denseMatrix(const std::vector<coupledBlock::triplet>& K, int n)
