@@ -24,9 +24,25 @@ Foam::ALEResidual<T> Foam::ALENavierStokes::residualAt
     ALEGeometry<T> g;
     g.fromPoints(mesh_, x);
     const faceList& faces = mesh_.faces();
-    std::vector<T> Fm(faces.size());
+    const label nI = mesh_.nInternalFaces();
+    // Mesh fluxes: the residual uses none of empty, wedge and interface
+    // faces (no flux crosses them)
+    std::vector<T> Fm(faces.size(), T(0.0));
     forAll(faces, f)
     {
+        if (f >= nI)
+        {
+            const velocityBC bc =
+                uBC_[mesh_.boundaryMesh().whichPatch(f)];
+            if
+            (
+                bc == velocityBC::empty || bc == velocityBC::wedge
+             || bc == velocityBC::interface
+            )
+            {
+                continue;
+            }
+        }
         if constexpr (std::is_same<T, form::sparseDual>::value)
         {
             Fm[f] = sweptVolumeSparse(faces[f], points0_, x)/dt_;
@@ -139,7 +155,10 @@ void Foam::ALENavierStokes::addMeshDerivative
 
     // Chain with dx_u/dU, column by column: the rows of DgT^T = dR/dU
     // (transposed, so that a row's columns are contiguous)
-    form::matX DgT = form::matX::Zero(nd, nF + nd);
+    // (kept between iterations: a fresh allocation of this size costs
+    // its page faults every time)
+    form::matX& DgT = DgT_;
+    DgT.setZero(nd, nF + nd);
     const auto& pi = itf.pointInterpolation();
     form::vecX coef(nd);
     for (int col = 0; col < dRdx.outerSize(); ++col)
