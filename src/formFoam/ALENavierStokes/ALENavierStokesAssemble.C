@@ -8,8 +8,6 @@ Description
     matrix, written by hand (ALENavierStokes.H has the equations).
 \*---------------------------------------------------------------------------*/
 #include "ALENavierStokesResidual.H"
-#include "wallClock.H"
-#include "formError.H"
 #include "wedgeFvPatch.H"
 
 namespace

@@ -11,7 +11,6 @@ Description
 #include "fluidSolidInterface.H"
 #include "solidModel.H"
 #include "formError.H"
-#include <map>
 
 void Foam::ALENavierStokes::moveMesh(const pointField& points, bool check)
 {

@@ -45,8 +45,18 @@ const std::string zeroP =
     " frontAndBack { type empty; } axis { type empty; }"
     " front { type wedge; } back { type wedge; } }\n";
 
-template<class V>
-double magnitude(const V& v) { return Foam::mag(v); }
+// The files of a scratch fluid case on a blockMeshDict (the geometry does
+// not depend on the schemes or the conditions)
+std::map<std::string, std::string> geometryCase
+(
+    const std::string& blockMesh,
+    const std::string& U = zeroU,
+    const std::string& p = zeroP
+)
+{
+    return fluidCaseFiles("fluid", blockMesh, "Euler", "Gauss linear",
+                          "Gauss linear corrected", U, p);
+}
 
 // Largest |a - b| over a list, relative to the largest |b|
 template<class A, class B>
@@ -84,8 +94,7 @@ TEST(ALEGeometry, fromPointsEqualsTheFvMeshGeometry)
           : zeroP;
         scratchCase c
         (
-            fluidCaseFiles("fluid", *mc.blockMesh, "Euler", "Gauss linear",
-                           "Gauss linear corrected", bc, bp),
+            geometryCase(*mc.blockMesh, bc, bp),
             {"fluid"}
         );
         Foam::fvMesh& mesh = c.mesh();
@@ -148,8 +157,7 @@ TEST(ALEGeometry, dualDerivativesAgreeWithCentralDifferences)
     {
         scratchCase c
         (
-            fluidCaseFiles("fluid", *mc.blockMesh, "Euler", "Gauss linear",
-                           "Gauss linear corrected", zeroU, zeroP),
+            geometryCase(*mc.blockMesh),
             {"fluid"}
         );
         Foam::fvMesh& mesh = c.mesh();
@@ -253,8 +261,7 @@ TEST(ALEGeometry, sparseGradientsAreTheDualDerivatives)
     {
         scratchCase c
         (
-            fluidCaseFiles("fluid", *mesh, "Euler", "Gauss linear",
-                           "Gauss linear corrected", zeroU, zeroP),
+            geometryCase(*mesh),
             {"fluid"}
         );
         const Foam::fvMesh& fm = c.mesh();
