@@ -3,9 +3,8 @@
 -------------------------------------------------------------------------------
 Description
     Implementation of umfpackSolver.H: Sparse LU factorisation P R K Q = L U
-    (SuiteSparse UMFPACK through Eigen::UmfPackLU) with the METIS column
-    ordering, or AMD (UMFPACK's default) if a row or column of K has more
-    than 10 sqrt(n) entries.
+    (SuiteSparse UMFPACK through Eigen::UmfPackLU) with the METIS or the
+    AMD column ordering (umfpackSolver.H says which).
 \*---------------------------------------------------------------------------*/
 #include "umfpackSolver.H"
 #include "formError.H"
@@ -28,13 +27,41 @@ struct umfpackLU
 
 struct umfpackSolver::impl
 {
-    umfpackLU lu;
+    //- The factorisation, and the other ordering's analysis while the
+    //  first factorisation compares them (else null)
+    std::unique_ptr<umfpackLU> lu = std::make_unique<umfpackLU>();
+    std::unique_ptr<umfpackLU> other;
     // UMFPACK's solve reads the matrix again (iterative refinement), so the
     // factorised matrix is kept here rather than referenced
     sparseMatrix K;
     bool analysed = false;
     bool factorised = false;
-    bool metis = false;
+    //- The ordering a first factorisation chose (-1: none yet), and the
+    //  nonzeros of its matrix
+    int chosen = -1;
+    double chosenNonZeros = 0;
+
+    //- Symbolic analysis of K with an ordering into a new object
+    std::unique_ptr<umfpackLU> analyse(int ordering) const
+    {
+        auto lu = std::make_unique<umfpackLU>();
+        lu->umfpackControl()(UMFPACK_ORDERING) = ordering;
+        lu->analyzePattern(K);
+        if (lu->info() != Eigen::Success)
+        {
+            throw numericalError
+            (
+                "umfpack: symbolic analysis failed, status "
+              + std::to_string(int(lu->infoValue(UMFPACK_STATUS)))
+            );
+        }
+        return lu;
+    }
+
+    bool metis(const umfpackLU& lu) const
+    {
+        return int(lu.infoValue(UMFPACK_ORDERING_USED)) == UMFPACK_ORDERING_METIS;
+    }
 };
 
 namespace
@@ -66,9 +93,10 @@ bool hasDenseRowOrColumn(const form::sparseMatrix& K)
 } // namespace form
 
 
-form::umfpackSolver::umfpackSolver()
+form::umfpackSolver::umfpackSolver(ordering o)
 :
-    impl_(std::make_unique<impl>())
+    impl_(std::make_unique<impl>()),
+    ordering_(o)
 {
 }
 
@@ -82,53 +110,100 @@ void form::umfpackSolver::analyzePattern(const sparseMatrix& K)
     {
         throw numericalError("umfpack: matrix is not square");
     }
-    impl_->K = K;
-    impl_->K.makeCompressed();
-    impl_->lu.umfpackControl()(UMFPACK_ORDERING) =
-        hasDenseRowOrColumn(impl_->K)
-      ? UMFPACK_ORDERING_AMD
-      : UMFPACK_ORDERING_METIS;
-    impl_->lu.analyzePattern(impl_->K);
-    if (impl_->lu.info() != Eigen::Success)
+    impl& m = *impl_;
+    m.K = K;
+    m.K.makeCompressed();
+    m.analysed = false;
+    m.factorised = false;
+    m.other.reset();
+    if (hasDenseRowOrColumn(m.K) && ordering_ == ordering::automatic)
     {
-        throw numericalError
-        (
-            "umfpack: symbolic analysis failed, status "
-          + std::to_string(int(impl_->lu.infoValue(UMFPACK_STATUS)))
-        );
+        m.lu = m.analyse(UMFPACK_ORDERING_AMD);
     }
-    impl_->metis =
-        int(impl_->lu.infoValue(UMFPACK_ORDERING_USED)) == UMFPACK_ORDERING_METIS;
-    impl_->analysed = true;
-    impl_->factorised = false;
+    else if
+    (
+        ordering_ != ordering::automatic
+     || (
+            m.chosen >= 0
+         && std::abs(m.K.nonZeros() - m.chosenNonZeros) <= 0.25*m.chosenNonZeros
+        )
+    )
+    {
+        const int o =
+            ordering_ == ordering::metis ? UMFPACK_ORDERING_METIS
+          : ordering_ == ordering::amd ? UMFPACK_ORDERING_AMD
+          : m.chosen;
+        m.lu = m.analyse(o);
+    }
+    else
+    {
+        // The first pattern, or one of another size: both orderings. The
+        // symbolic flop estimates decide if they differ by more than a
+        // factor 4 (the FSI matrix at rest: 32), else the first numeric
+        // factorisation
+        auto metis = m.analyse(UMFPACK_ORDERING_METIS);
+        auto amd = m.analyse(UMFPACK_ORDERING_AMD);
+        const double fm = metis->infoValue(UMFPACK_FLOPS_ESTIMATE);
+        const double fa = amd->infoValue(UMFPACK_FLOPS_ESTIMATE);
+        const bool amdFirst = fa < fm;
+        m.lu = std::move(amdFirst ? amd : metis);
+        if (std::max(fm, fa) <= 4*std::min(fm, fa))
+        {
+            m.other = std::move(amdFirst ? metis : amd);
+        }
+        else
+        {
+            m.chosen = amdFirst ? UMFPACK_ORDERING_AMD : UMFPACK_ORDERING_METIS;
+            m.chosenNonZeros = m.K.nonZeros();
+        }
+    }
+    m.analysed = true;
 }
 
 
 void form::umfpackSolver::factorize(const sparseMatrix& K)
 {
-    if (!impl_->analysed)
+    impl& m = *impl_;
+    if (!m.analysed)
     {
         analyzePattern(K);
     }
-    impl_->factorised = false;
-    impl_->K = K;
-    impl_->K.makeCompressed();
-    impl_->lu.factorize(impl_->K);
-    if (impl_->lu.info() != Eigen::Success)
+    m.factorised = false;
+    m.K = K;
+    m.K.makeCompressed();
+    const auto factor = [&](umfpackLU& lu)
     {
-        const int status = impl_->lu.umfpackFactorizeReturncode();
-        throw numericalError
-        (
-            std::string("umfpack: numeric factorisation failed (")
-          + (
-                status == UMFPACK_WARNING_singular_matrix
-              ? "singular matrix"
-              : "status " + std::to_string(status)
-            )
-          + ")"
-        );
+        lu.factorize(m.K);
+        if (lu.info() != Eigen::Success)
+        {
+            const int status = lu.umfpackFactorizeReturncode();
+            throw numericalError
+            (
+                std::string("umfpack: numeric factorisation failed (")
+              + (
+                    status == UMFPACK_WARNING_singular_matrix
+                  ? "singular matrix"
+                  : "status " + std::to_string(status)
+                )
+              + ")"
+            );
+        }
+    };
+    factor(*m.lu);
+    if (m.other)
+    {
+        // The first factorisation with the other ordering too: the one
+        // with fewer flops stays, for the later patterns as well
+        factor(*m.other);
+        if (m.other->infoValue(UMFPACK_FLOPS) < m.lu->infoValue(UMFPACK_FLOPS))
+        {
+            std::swap(m.lu, m.other);
+        }
+        m.other.reset();
+        m.chosen = m.metis(*m.lu) ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
+        m.chosenNonZeros = m.K.nonZeros();
     }
-    impl_->factorised = true;
+    m.factorised = true;
 }
 
 
@@ -138,8 +213,8 @@ form::vecX form::umfpackSolver::solve(const vecX& r)
     {
         throw numericalError("umfpack: solve() called without factorisation");
     }
-    vecX x = impl_->lu.solve(r);
-    if (impl_->lu.info() != Eigen::Success || !x.allFinite())
+    vecX x = impl_->lu->solve(r);
+    if (impl_->lu->info() != Eigen::Success || !x.allFinite())
     {
         throw numericalError("umfpack: solve failed");
     }
@@ -154,19 +229,19 @@ form::linearSolver::factorStats form::umfpackSolver::stats() const
     if (!impl_->factorised) return {};
     return
     {
-        impl_->lu.infoValue(UMFPACK_LNZ) + impl_->lu.infoValue(UMFPACK_UNZ),
-        impl_->lu.infoValue(UMFPACK_FLOPS)
+        impl_->lu->infoValue(UMFPACK_LNZ) + impl_->lu->infoValue(UMFPACK_UNZ),
+        impl_->lu->infoValue(UMFPACK_FLOPS)
     };
 }
 
 
 double form::umfpackSolver::factorMemory() const
 {
-    if (!impl_->factorised || !impl_->lu.numeric()) return 0;
+    if (!impl_->factorised || !impl_->lu->numeric()) return 0;
     int lnz = 0, unz = 0, nRow = 0, nCol = 0, nzUdiag = 0;
     umfpack_di_get_lunz
     (
-        &lnz, &unz, &nRow, &nCol, &nzUdiag, impl_->lu.numeric()
+        &lnz, &unz, &nRow, &nCol, &nzUdiag, impl_->lu->numeric()
     );
     return (double(lnz) + double(unz))*(sizeof(double) + sizeof(int));
 }
@@ -174,5 +249,5 @@ double form::umfpackSolver::factorMemory() const
 
 bool form::umfpackSolver::usedMetis() const
 {
-    return impl_->metis;
+    return impl_->analysed && impl_->metis(*impl_->lu);
 }

@@ -215,12 +215,89 @@ TEST(linearSolver, MetisOrderingAndFactorMemory)
     EXPECT_GT(c.factorMemory(), nnzLower*sizeof(double));
     EXPECT_LT(c.factorMemory(), 0.5*K.rows()*K.rows()*sizeof(double));
 
-    umfpackSolver u;
+    umfpackSolver u(umfpackSolver::ordering::metis);
     u.analyzePattern(K);
     u.factorize(K);
     EXPECT_TRUE(u.usedMetis());
     EXPECT_GT(u.factorMemory(), K.nonZeros()*sizeof(double));
     EXPECT_LT(u.factorMemory(), double(K.rows())*K.rows()*sizeof(double));
+}
+
+
+// The automatic ordering keeps the ordering of fewer flops at the first
+// factorisation: on 2D grids (a 5-point and a wide 2-layer stencil) it is
+// the cheaper of METIS and AMD, factorised both ways, and stays for the
+// next factorisations and patterns of about that size; the solutions
+// agree
+TEST(linearSolver, UmfpackKeepsTheCheaperOrdering)
+{
+    for (const int width : {0, 2})
+    {
+        SCOPED_TRACE("stencil width " + std::to_string(width));
+        sparseMatrix K = gridMatrix(40, 0.01, 0.3);
+        if (width)
+        {
+            // couple every node to its neighbours two layers away
+            std::vector<Eigen::Triplet<double>> t;
+            for (int k = 0; k < K.outerSize(); ++k)
+            {
+                for (sparseMatrix::InnerIterator it(K, k); it; ++it)
+                {
+                    t.emplace_back(it.row(), it.col(), it.value());
+                }
+            }
+            const int n = 40;
+            for (int i = 0; i < n; ++i)
+            {
+                for (int j = 0; j < n; ++j)
+                {
+                    for (int di = -width; di <= width; ++di)
+                    {
+                        for (int dj = -width; dj <= width; ++dj)
+                        {
+                            const int a = i + di, b = j + dj;
+                            if (a < 0 || b < 0 || a >= n || b >= n) continue;
+                            t.emplace_back(i*n + j, a*n + b, 1e-3*std::sin(i + 2.0*j + 3.0*a + b));
+                        }
+                    }
+                }
+            }
+            K.setFromTriplets(t.begin(), t.end());
+            K.makeCompressed();
+        }
+        const vecX r = vecX::LinSpaced(K.rows(), -1, 2);
+        double flops[3];
+        vecX x[3];
+        int k = 0;
+        for
+        (
+            const auto o :
+            {
+                umfpackSolver::ordering::amd, umfpackSolver::ordering::metis,
+                umfpackSolver::ordering::automatic
+            }
+        )
+        {
+            umfpackSolver u(o);
+            u.analyzePattern(K);
+            u.factorize(K);
+            flops[k] = u.stats().flops;
+            x[k] = u.solve(r);
+            // the choice stays for the next factorisations and patterns
+            const bool metis = u.usedMetis();
+            u.factorize(K);
+            EXPECT_EQ(u.stats().flops, flops[k]);
+            u.analyzePattern(K);
+            u.factorize(K);
+            EXPECT_EQ(u.stats().flops, flops[k]);
+            EXPECT_EQ(u.usedMetis(), metis);
+            ++k;
+        }
+        EXPECT_NE(flops[0], flops[1]);
+        EXPECT_EQ(flops[2], std::min(flops[0], flops[1]));
+        EXPECT_LT((x[2] - x[0]).norm(), 1e-10*x[0].norm());
+        EXPECT_LT((x[2] - x[1]).norm(), 1e-10*x[0].norm());
+    }
 }
 
 
