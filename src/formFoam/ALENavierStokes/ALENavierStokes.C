@@ -585,8 +585,13 @@ Foam::vector Foam::ALENavierStokes::patchForce(const word& patch) const
 std::string Foam::ALENavierStokes::describe() const
 {
     std::ostringstream os;
-    os  << mesh_.nCells() << " cells, " << x_.size() << " unknowns ("
-        << D_ << " velocity components and the pressure per cell), rho "
+    os  << mesh_.nCells() << " cells, " << nCellUnknowns() << " unknowns ("
+        << D_ << " velocity components and the pressure per cell";
+    if (interface_)
+    {
+        os  << ", and " << interface_->nMeshUnknowns() << " mesh unknowns";
+    }
+    os  << "), rho "
         << set_.rho << ", mu " << set_.mu << ", ";
     if (set_.incompressible) os << "incompressible";
     else os << "bulk modulus " << set_.bulkModulus;
@@ -597,17 +602,9 @@ std::string Foam::ALENavierStokes::describe() const
         << set_.meshMotion;
     if (interface_)
     {
-        label n = 0;
-        for (label u = 0; u < interface_->motionUnits().size(); ++u)
-        {
-            for (label c = 0; c < 2; ++c)
-            {
-                n += interface_->unitKind(u, c) != fluidSolidInterface::fixedUnit;
-            }
-        }
         os  << "\nmesh derivative: exact (sparse forward-mode automatic"
-            << " differentiation) with respect to " << n
-            << " point coordinates, one evaluation per Newton iteration";
+            << " differentiation) with respect to the points, one evaluation"
+            << " per Newton iteration";
     }
     return os.str();
 }
@@ -750,9 +747,28 @@ void Foam::ALENavierStokes::revert()
 
 std::string Foam::ALENavierStokes::unknownName(int j) const
 {
-    const label c = j/(D_ + 1), k = j % (D_ + 1);
     const char* names = "xyz";
     std::ostringstream os;
+    if (j >= nCellUnknowns())
+    {
+        // A mesh unknown: its unit's reference point and direction
+        const fluidSolidInterface& itf = *interface_;
+        const label k = j - nCellUnknowns();
+        forAll(itf.motionUnits(), u)
+        {
+            for (label c = 0; c < 2; ++c)
+            {
+                if (itf.meshUnknown(u, c) != k) continue;
+                const label p = itf.motionUnits()[u][0];
+                const point& x = points00_[p];
+                os  << mesh_.name() << " mesh point (" << x.x() << ' '
+                    << x.y() << ' ' << x.z() << ") displacement "
+                    << (c ? "z (y)" : "r (x)");
+                return os.str();
+            }
+        }
+    }
+    const label c = j/(D_ + 1), k = j % (D_ + 1);
     os  << mesh_.name() << " cell " << c << ' '
         << (k == D_ ? std::string("p") : std::string("U") + names[cmp_[k]]);
     return os.str();
@@ -761,15 +777,18 @@ std::string Foam::ALENavierStokes::unknownName(int j) const
 
 std::vector<double> Foam::ALENavierStokes::state() const
 {
-    std::vector<double> s(x_.data(), x_.data() + x_.size());
-    s.insert(s.end(), x0_.data(), x0_.data() + x0_.size());
+    // The cells' unknowns (the mesh unknowns follow from the points,
+    // written with the fields)
+    const label n = nCellUnknowns();
+    std::vector<double> s(x_.data(), x_.data() + n);
+    s.insert(s.end(), x0_.data(), x0_.data() + n);
     return s;
 }
 
 
 void Foam::ALENavierStokes::setState(const std::vector<double>& s)
 {
-    const std::size_t n = x_.size();
+    const std::size_t n = nCellUnknowns();
     if (s.size() != 2*n)
     {
         throw form::numericalError

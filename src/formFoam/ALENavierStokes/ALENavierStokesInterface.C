@@ -2,9 +2,10 @@
   formFoam: implicit finite-element forming with fluid-structure interaction
 -------------------------------------------------------------------------------
 Description
-    ALENavierStokes: the mesh following the solid (moveMesh), the
-    interface and the derivatives of the fluid residual with respect to
-    the solid's interface dofs (evaluateInterface; ALENavierStokes.H).
+    ALENavierStokes: the mesh following the solid and the mesh unknowns
+    (moveMesh), the interface, the mesh equations and the derivatives of
+    the fluid residual with respect to the solid's interface dofs
+    (evaluateInterface; ALENavierStokes.H).
 \*---------------------------------------------------------------------------*/
 #include "ALENavierStokes.H"
 #include "wallClock.H"
@@ -37,6 +38,13 @@ void Foam::ALENavierStokes::setInterface
         interfaceFace_[interface_->faces()[j] - mesh_.nInternalFaces()] = j;
     }
     uInterface_.setSize(interface_->faces().size(), Zero);
+    // The mesh unknowns after the cells' (those of the mesh's points: a
+    // restart's written points, or zero)
+    const label n = nCellUnknowns(), nM = interface_->nMeshUnknowns();
+    x_.conservativeResize(n + nM);
+    x_.tail(nM) = interface_->meshUnknowns(mesh_.points());
+    x0_.conservativeResize(n + nM);
+    x0_.tail(nM) = x_.tail(nM);
 }
 
 
@@ -51,10 +59,12 @@ void Foam::ALENavierStokes::evaluateInterface
     const fluidSolidInterface& itf = *interface_;
     const label off = Us.size();
     const label nI = mesh_.nInternalFaces();
+    const label nCU = nCellUnknowns(), nM = itf.nMeshUnknowns();
     if (Un_.size() != Us.size()) Un_ = Us;
 
-    // The mesh follows the solid
-    const pointField base(itf.points(Us));
+    // The mesh follows the solid and the mesh unknowns
+    const form::vecX d = x_.tail(nM);
+    const pointField base(itf.points(Us, d));
     moveMesh(base);
 
     // The solid's velocity by its time integrator, or the backward
@@ -76,6 +86,12 @@ void Foam::ALENavierStokes::evaluateInterface
 
     std::vector<interfaceEntry> KI;
     assemble(off, r, K, K ? &KI : nullptr);
+
+    // The mesh equations (fluidSolidInterface.H (4))
+    form::vecX rm;
+    itf.meshEquations(Us, d, rm, off + nCU, K);
+    r.conservativeResize(nCU + nM);
+    r.tail(nM) = rm;
 
     // The fluid's forces on the solid
     const labelList& faces = itf.faces();
@@ -155,7 +171,7 @@ void Foam::ALENavierStokes::evaluateInterface
         }
     }
 
-    // Through the mesh: dR/dU = dR/dx dx/dU (ALENavierStokesShape.C)
+    // Through the mesh: dR/dx (ALENavierStokesShape.C)
     addMeshDerivative(base, off, *K);
 }
 

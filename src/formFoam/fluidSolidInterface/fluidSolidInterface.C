@@ -8,7 +8,6 @@ Description
 #include "quadShape.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <map>
 #include <tuple>
@@ -317,63 +316,10 @@ Foam::fluidSolidInterface::fluidSolidInterface
         kind[1][pk.first] = pk.second;
     }
 
-    // Harmonic extension per component
-    const edgeList& meshEdges = fluid_.edges();
-    const label nI = q2D.size();
-    labelList freeIndex[2] = {labelList(nP, -1), labelList(nP, -1)};
-    for (label c = 0; c < 2; ++c)
-    {
-        labelList& index = freeIndex[c];
-        label nF = 0;
-        forAll(kind[c], p)
-        {
-            if (kind[c][p] == -1)
-            {
-                index[p] = nF++;
-                free_[c].append(p);
-            }
-        }
-        H_[c].setZero(nF, nI);
-        if (!nF) continue;
-        std::vector<Eigen::Triplet<double>> t;
-        form::matX B = form::matX::Zero(nF, nI);
-        for (const edge& e : meshEdges)
-        {
-            const label a = e[0], b = e[1];
-            const scalar len = (q[a] - q[b]).norm();
-            if (len < tol) continue;
-            const scalar w = 1/sqr(len);
-            for (label s = 0; s < 2; ++s)
-            {
-                const label p = s ? b : a, o = s ? a : b;
-                if (index[p] < 0) continue;
-                t.emplace_back(index[p], index[p], w);
-                if (index[o] >= 0) t.emplace_back(index[p], index[o], -w);
-                else if (kind[c][o] >= 0) B(index[p], kind[c][o]) += w;
-            }
-        }
-        Eigen::SparseMatrix<double> Lff(nF, nF);
-        Lff.setFromTriplets(t.begin(), t.end());
-        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(Lff);
-        if
-        (
-            ldlt.info() != Eigen::Success
-         || !(ldlt.vectorD().minCoeff() > 1e-12*ldlt.vectorD().maxCoeff())
-        )
-        {
-            FatalErrorInFunction
-                << "Fluid region '" << region << "' (" << file.c_str() << "): the"
-                << " mesh motion has points free in the "
-                << (c ? "axial (y)" : "radial (x)") << " direction that no"
-                << " wall, inlet, outlet or interface holds; fix a patch"
-                << exit(FatalError);
-        }
-        H_[c] = ldlt.solve(B);
-    }
-
     // Motion units: the points joined by mesh edges without in-plane
     // length (the copies of one in-plane point), split where their kinds
     // differ
+    const edgeList& meshEdges = fluid_.edges();
     labelList root(identity(nP));
     const auto find = [&](label p)
     {
@@ -388,6 +334,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
         }
     }
     std::map<std::tuple<label, label, label>, label> unitOf;
+    labelList pointUnit(nP, -1);
     for (label p = 0; p < nP; ++p)
     {
         const auto key = std::make_tuple(find(p), kind[0][p], kind[1][p]);
@@ -400,48 +347,219 @@ Foam::fluidSolidInterface::fluidSolidInterface
             {
                 const label k = kind[c][p];
                 unitKind_[c].append(k == -1 ? freeUnit : k == -2 ? fixedUnit : k);
-                unitRow_[c].append(freeIndex[c][p]);
+                unknown_[c].append(k == -1 ? nUnknowns_[c]++ : -1);
             }
         }
         units_[it->second].append(p);
+        pointUnit[p] = it->second;
+    }
+
+    // The mesh equations (4) per component: each free unit's row sums its
+    // points' Laplace equations; weights relative to the mean square edge
+    scalar l2 = 0;
+    label nEdges = 0;
+    for (const edge& e : meshEdges)
+    {
+        const scalar len = (q[e[0]] - q[e[1]]).norm();
+        if (len < tol) continue;
+        l2 += sqr(len);
+        ++nEdges;
+    }
+    l2 /= max(nEdges, label(1));
+    const label nI = q2D.size();
+    for (label c = 0; c < 2; ++c)
+    {
+        const label nF = nUnknowns_[c];
+        std::vector<Eigen::Triplet<double>> tL, tB;
+        for (const edge& e : meshEdges)
+        {
+            const scalar len = (q[e[0]] - q[e[1]]).norm();
+            if (len < tol) continue;
+            const scalar w = l2/sqr(len);
+            for (label s = 0; s < 2; ++s)
+            {
+                const label u = pointUnit[s ? e[1] : e[0]];
+                const label o = pointUnit[s ? e[0] : e[1]];
+                const label row = unknown_[c][u];
+                if (row < 0) continue;
+                tL.emplace_back(row, row, w);
+                if (unknown_[c][o] >= 0)
+                {
+                    tL.emplace_back(row, unknown_[c][o], -w);
+                }
+                else if (unitKind_[c][o] >= 0)
+                {
+                    tB.emplace_back(row, unitKind_[c][o], -w);
+                }
+            }
+        }
+        L_[c].resize(nF, nF);
+        L_[c].setFromTriplets(tL.begin(), tL.end());
+        B_[c].resize(nF, nI);
+        B_[c].setFromTriplets(tB.begin(), tB.end());
+        if (!nF) continue;
+        ldlt_[c].compute(L_[c]);
+        if
+        (
+            ldlt_[c].info() != Eigen::Success
+         || !(ldlt_[c].vectorD().minCoeff() > 1e-12*ldlt_[c].vectorD().maxCoeff())
+        )
+        {
+            FatalErrorInFunction
+                << "Fluid region '" << region << "' (" << file.c_str() << "): the"
+                << " mesh motion has points free in the "
+                << (c ? "axial (y)" : "radial (x)") << " direction that no"
+                << " wall, inlet, outlet or interface holds; fix a patch"
+                << exit(FatalError);
+        }
     }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-Foam::tmp<Foam::pointField>
-Foam::fluidSolidInterface::points(const form::vecX& U) const
+form::vecX Foam::fluidSolidInterface::interfaceDisplacement
+(
+    const form::vecX& U
+) const
 {
-    tmp<pointField> tpts(new pointField(points0_));
-    pointField& pts = tpts.ref();
     const label nI = pointIds_.size();
-    form::vecX dB[2] = {form::vecX::Zero(nI), form::vecX::Zero(nI)};
+    form::vecX dI = form::vecX::Zero(2*nI);
     for (label i = 0; i < nI; ++i)
     {
         const solidPoint& sp = pointInterp_[i];
         for (std::size_t a = 0; a < sp.nodes.size(); ++a)
         {
-            dB[0](i) += sp.N[a]*U(dofMap_.dof(sp.nodes[a], 0));
-            dB[1](i) += sp.N[a]*U(dofMap_.dof(sp.nodes[a], 1));
-        }
-        for (const label p : pointIds_[i])
-        {
-            pts[p] += dB[0](i)*er_[p] + dB[1](i)*ez_[p];
+            for (label c = 0; c < 2; ++c)
+            {
+                dI(2*i + c) += sp.N[a]*U(dofMap_.dof(sp.nodes[a], c));
+            }
         }
     }
+    return dI;
+}
+
+
+form::vecX Foam::fluidSolidInterface::harmonicDisplacement
+(
+    const form::vecX& U
+) const
+{
+    const form::vecX dI = interfaceDisplacement(U);
+    const label nI = pointIds_.size();
+    form::vecX d(nMeshUnknowns());
+    label off = 0;
     for (label c = 0; c < 2; ++c)
     {
-        if (!free_[c].size()) continue;
-        const form::vecX d = H_[c]*dB[c];
-        const vectorField& e = c ? ez_ : er_;
-        forAll(free_[c], k)
+        if (nUnknowns_[c])
         {
-            const label p = free_[c][k];
-            pts[p] += d(k)*e[p];
+            const form::vecX dc = dI(Eigen::seqN(c, nI, 2));
+            d.segment(off, nUnknowns_[c]) = ldlt_[c].solve(-(B_[c]*dc));
+        }
+        off += nUnknowns_[c];
+    }
+    return d;
+}
+
+
+void Foam::fluidSolidInterface::meshEquations
+(
+    const form::vecX& U,
+    const form::vecX& d,
+    form::vecX& r,
+    label off,
+    std::vector<Eigen::Triplet<double>>* K
+) const
+{
+    const form::vecX dI = interfaceDisplacement(U);
+    const label nI = pointIds_.size();
+    r.resize(nMeshUnknowns());
+    label start = 0;
+    for (label c = 0; c < 2; ++c)
+    {
+        const label n = nUnknowns_[c];
+        if (n)
+        {
+            const form::vecX dc = dI(Eigen::seqN(c, nI, 2));
+            r.segment(start, n) = -(L_[c]*d.segment(start, n) + B_[c]*dc);
+        }
+        if (K)
+        {
+            // K = -dr/dq = [L_c, B_c dd_I/dU]
+            for (int k = 0; k < L_[c].outerSize(); ++k)
+            {
+                for (Eigen::SparseMatrix<double>::InnerIterator it(L_[c], k); it; ++it)
+                {
+                    K->emplace_back
+                    (
+                        off + start + it.row(), off + start + it.col(), it.value()
+                    );
+                }
+            }
+            for (int i = 0; i < B_[c].outerSize(); ++i)
+            {
+                const solidPoint& sp = pointInterp_[i];
+                for (Eigen::SparseMatrix<double>::InnerIterator it(B_[c], i); it; ++it)
+                {
+                    for (std::size_t a = 0; a < sp.nodes.size(); ++a)
+                    {
+                        K->emplace_back
+                        (
+                            off + start + it.row(), dofMap_.dof(sp.nodes[a], c),
+                            it.value()*sp.N[a]
+                        );
+                    }
+                }
+            }
+        }
+        start += n;
+    }
+}
+
+
+Foam::tmp<Foam::pointField> Foam::fluidSolidInterface::points
+(
+    const form::vecX& U,
+    const form::vecX& d
+) const
+{
+    const form::vecX dI = interfaceDisplacement(U);
+    tmp<pointField> tpts(new pointField(points0_));
+    pointField& pts = tpts.ref();
+    forAll(units_, u)
+    {
+        for (label c = 0; c < 2; ++c)
+        {
+            const label k = unitKind_[c][u];
+            const scalar dc =
+                k == freeUnit ? d(meshUnknown(u, c))
+              : k == fixedUnit ? 0.0
+              : dI(2*k + c);
+            if (dc == 0) continue;
+            for (const label p : units_[u])
+            {
+                pts[p] += dc*direction(p, c);
+            }
         }
     }
     return tpts;
+}
+
+
+form::vecX Foam::fluidSolidInterface::meshUnknowns(const pointField& pts) const
+{
+    form::vecX d(nMeshUnknowns());
+    forAll(units_, u)
+    {
+        for (label c = 0; c < 2; ++c)
+        {
+            const label k = meshUnknown(u, c);
+            if (k < 0) continue;
+            const label p = units_[u][0];
+            d(k) = (pts[p] - points0_[p]) & direction(p, c);
+        }
+    }
+    return d;
 }
 
 
@@ -515,8 +633,8 @@ std::string Foam::fluidSolidInterface::describe() const
     os  << "interface: " << faces_.size() << " fluid faces, "
         << pointIds_.size() << " interface points projected onto the solid"
         << " (largest distance " << gap << "); mesh motion: harmonic"
-        << " extension, " << free_[0].size() << '/' << free_[1].size()
-        << " free points (r/z)";
+        << " (discrete Laplace equations of " << nUnknowns_[0] << '/'
+        << nUnknowns_[1] << " free points (r/z) in the Newton system)";
     return os.str();
 }
 

@@ -10,6 +10,11 @@ Description
     - the interface points follow a solid displacement quadratic along the
       edge exactly (eq. 1: the Q9 edge is quadratic), the fixed walls stay
       and the interior follows by the harmonic extension, between them;
+    - the mesh equations (4), assembled per motion unit, are the discrete
+      Laplace equations of every free 3D point (checked point by point
+      from the mesh's edges), with side walls fixed or sliding; their
+      matrix is their exact derivative (they are linear); the mesh
+      unknowns of moved points are the unknowns that moved them;
     - the fluid's total force reaches the solid exactly, and the power the
       fluid exerts on the wall (interface face velocities, eq. 2, times the
       face forces) is the power the solid receives (nodal velocities times
@@ -25,6 +30,7 @@ Description
 
 using namespace form;
 using namespace form::test;
+using Foam::labelList;
 
 namespace
 {
@@ -76,15 +82,24 @@ std::map<std::string, std::string> interfaceCase()
 
 struct interfaceFixture
 {
+    explicit interfaceFixture(const Foam::wordList& slip = {})
+    :
+        itf(fluid, points0, {"wet"}, solid, {"top"}, slip, "fluidProperties")
+    {}
     scratchCase c{interfaceCase(), {"fluid", "solid"}};
     Foam::polyMeshToFeMesh solid{c.mesh("solid"), 2, "solidProperties", 9, "Q9P3", "steel"};
     Foam::fvMesh& fluid = c.mesh("fluid");
     Foam::pointField points0{fluid.points()};
-    Foam::fluidSolidInterface itf
-    {
-        fluid, points0, {"wet"}, solid, {"top"}, {}, "fluidProperties"
-    };
+    Foam::fluidSolidInterface itf;
 };
+
+vecX randomVector(int n, std::mt19937& rng, double a)
+{
+    std::uniform_real_distribution<double> uni(-a, a);
+    vecX v(n);
+    for (int i = 0; i < n; ++i) v(i) = uni(rng);
+    return v;
+}
 
 std::string at(const Foam::point& p)
 {
@@ -131,7 +146,7 @@ TEST(fluidSolidInterface, MeshFollowsAQuadraticDisplacementExactly)
         U(2*a) = ux(X(a, 0));
         U(2*a + 1) = uy(X(a, 0));
     }
-    const Foam::pointField moved(f.itf.points(U));
+    const Foam::pointField moved(f.itf.points(U, f.itf.harmonicDisplacement(U)));
     int onInterface = 0, onWalls = 0, inside = 0;
     for (Foam::label p = 0; p < moved.size(); ++p)
     {
@@ -193,4 +208,86 @@ TEST(fluidSolidInterface, ForcesAndPowerReachTheSolidExactly)
             EXPECT_EQ(fn(d), 0) << "dof " << d;
         }
     }
+}
+
+
+TEST(fluidSolidInterface, MeshEquationsAreEveryFreePointsLaplaceEquation)
+{
+    for (const bool slip : {false, true})
+    {
+        interfaceFixture f(slip ? Foam::wordList{"walls"} : Foam::wordList{});
+        SCOPED_TRACE(slip ? "side walls sliding" : "side walls fixed");
+        const int nDofs = 2*int(f.solid.feMesh().X.rows());
+        std::mt19937 rng(11);
+        const vecX U = randomVector(nDofs, rng, 0.05);
+        const vecX d = f.itf.harmonicDisplacement(U);
+        EXPECT_EQ(d.size(), f.itf.nMeshUnknowns());
+        // 8 interior points' 4 units (x, y), and 2 x 2 side wall units
+        // sliding in y
+        EXPECT_EQ(f.itf.nMeshUnknowns(), slip ? 12 : 8);
+        const Foam::pointField x(f.itf.points(U, d));
+        // Every free 3D point p, component c: sum over its edges of
+        // (d_q - d_p) . e_c / |edge|^2 = 0 (the reference's edge lengths)
+        labelList unitOfPoint(x.size(), -1);
+        forAll(f.itf.motionUnits(), u)
+        {
+            for (const Foam::label p : f.itf.motionUnits()[u]) unitOfPoint[p] = u;
+        }
+        int checked = 0;
+        forAll(x, p)
+        {
+            for (Foam::label c = 0; c < 2; ++c)
+            {
+                if (f.itf.meshUnknown(unitOfPoint[p], c) < 0) continue;
+                double sum = 0, size = 0;
+                for (const Foam::label e : f.fluid.pointEdges()[p])
+                {
+                    const Foam::label q = f.fluid.edges()[e].otherVertex(p);
+                    Foam::vector l = f.points0[q] - f.points0[p];
+                    l.z() = 0;
+                    if (Foam::mag(l) < 1e-12) continue;
+                    const double term =
+                        ((x[q] - f.points0[q]) - (x[p] - f.points0[p]))
+                      & f.itf.direction(p, c);
+                    sum += term/Foam::magSqr(l);
+                    size += std::abs(term)/Foam::magSqr(l);
+                }
+                EXPECT_LT(std::abs(sum), 1e-13*size) << "point " << at(f.points0[p]);
+                ++checked;
+            }
+        }
+        EXPECT_EQ(checked, 2*f.itf.nMeshUnknowns());
+        vecX r;
+        f.itf.meshEquations(U, d, r, nDofs, nullptr);
+        EXPECT_LT(r.norm(), 1e-14*U.norm());
+        // (points of size 1: their round-off)
+        EXPECT_LT((f.itf.meshUnknowns(x) - d).lpNorm<Eigen::Infinity>(), 1e-15);
+    }
+}
+
+
+TEST(fluidSolidInterface, MeshEquationsMatrixIsTheirDerivative)
+{
+    interfaceFixture f({"walls"});
+    const int nDofs = 2*int(f.solid.feMesh().X.rows());
+    const int nM = f.itf.nMeshUnknowns();
+    std::mt19937 rng(5);
+    const vecX U = randomVector(nDofs, rng, 0.05);
+    const vecX d = randomVector(nM, rng, 0.05);
+    const vecX dU = randomVector(nDofs, rng, 0.01);
+    const vecX dd = randomVector(nM, rng, 0.01);
+    vecX r0, r1;
+    std::vector<Eigen::Triplet<double>> K;
+    f.itf.meshEquations(U, d, r0, nDofs, &K);
+    f.itf.meshEquations(U + dU, d + dd, r1, nDofs, nullptr);
+    Eigen::SparseMatrix<double> Km(nDofs + nM, nDofs + nM);
+    Km.setFromTriplets(K.begin(), K.end());
+    vecX dq(nDofs + nM);
+    dq << dU, dd;
+    const vecX Kdq = (Km*dq).tail(nM);
+    // r linear: r1 - r0 = -K dq exactly (to round-off)
+    EXPECT_LT((r1 - r0 + Kdq).norm(), 1e-14*Kdq.norm());
+    EXPECT_GT(Kdq.norm(), 0);
+    // the rows of the mesh unknowns only
+    EXPECT_EQ((Km*dq).head(nDofs).norm(), 0);
 }
