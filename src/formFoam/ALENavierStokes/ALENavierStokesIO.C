@@ -1,0 +1,236 @@
+/*---------------------------------------------------------------------------*\
+  formFoam: implicit finite-element forming with fluid-structure interaction
+-------------------------------------------------------------------------------
+Description
+    ALENavierStokes: what the fluid reports (volume, pressures, fluxes and
+    forces, the set-up and step lines of the log), its output (U, p and the
+    moved points) and the names and restart state of its unknowns
+    (ALENavierStokes.H).
+\*---------------------------------------------------------------------------*/
+#include "ALENavierStokes.H"
+#include "fluidSolidInterface.H"
+#include "pointIOField.H"
+#include "formError.H"
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::scalar Foam::ALENavierStokes::volume() const
+{
+    return depth_*gSum(mesh_.V());
+}
+
+
+Foam::scalar Foam::ALENavierStokes::meanPressure() const
+{
+    scalar sum = 0, w = 0;
+    if (interface_)
+    {
+        for (const label f : interface_->faces())
+        {
+            const scalar a = mag(mesh_.faceAreas()[f]);
+            sum += a*x_(ip(mesh_.faceOwner()[f]));
+            w += a;
+        }
+    }
+    else
+    {
+        forAll(mesh_.V(), c)
+        {
+            sum += mesh_.V()[c]*x_(ip(c));
+            w += mesh_.V()[c];
+        }
+    }
+    return w > 0 ? sum/w : 0;
+}
+
+
+Foam::label Foam::ALENavierStokes::findCell(const point& pt) const
+{
+    return mesh_.findCell(pt);
+}
+
+
+Foam::scalar Foam::ALENavierStokes::patchFlux(const word& patch) const
+{
+    const label patchi = mesh_.boundary().findPatchID(patch);
+    if (patchi < 0 || Fb_.empty()) return 0;
+    const fvPatch& fp = mesh_.boundary()[patchi];
+    scalar q = 0;
+    forAll(fp, i)
+    {
+        q += Fb_[fp.start() + i - mesh_.nInternalFaces()];
+    }
+    return depth_*q;
+}
+
+
+Foam::vector Foam::ALENavierStokes::patchForce(const word& patch) const
+{
+    const label patchi = mesh_.boundary().findPatchID(patch);
+    if (patchi < 0 || Fw_.empty()) return Zero;
+    const fvPatch& fp = mesh_.boundary()[patchi];
+    vector F = Zero;
+    forAll(fp, i)
+    {
+        F += Fw_[fp.start() + i - mesh_.nInternalFaces()];
+    }
+    return depth_*F;
+}
+
+
+std::string Foam::ALENavierStokes::describe() const
+{
+    std::ostringstream os;
+    os  << mesh_.nCells() << " cells, " << nCellUnknowns() << " unknowns ("
+        << D_ << " velocity components and the pressure per cell";
+    if (interface_)
+    {
+        os  << ", and " << interface_->nMeshUnknowns() << " mesh unknowns";
+    }
+    os  << "), rho "
+        << set_.rho << ", mu " << set_.mu << ", ";
+    if (set_.incompressible) os << "incompressible";
+    else os << "bulk modulus " << set_.bulkModulus;
+    os  << '\n' << (steady_ ? "steady" : "transient (Euler)")
+        << ", convection " << (upwind_ ? "upwind" : "linear")
+        << ", viscous flux " << (corrected_ ? "corrected" : "uncorrected")
+        << ", Rhie-Chow pressure-velocity coupling, mesh motion "
+        << set_.meshMotion;
+    if (interface_)
+    {
+        os  << "\nmesh derivative: exact (sparse forward-mode automatic"
+            << " differentiation) with respect to the points, one evaluation"
+            << " per Newton iteration";
+    }
+    return os.str();
+}
+
+
+std::string Foam::ALENavierStokes::report() const
+{
+    scalar uMax = 0, pMin = GREAT, pMax = -GREAT;
+    for (label c = 0; c < mesh_.nCells(); ++c)
+    {
+        uMax = max(uMax, mag(cellU(x_, c)));
+        pMin = min(pMin, x_(ip(c)));
+        pMax = max(pMax, x_(ip(c)));
+    }
+    std::ostringstream os;
+    os.precision(6);
+    os  << "max |U| = " << uMax << ", p in [" << pMin << ", " << pMax
+        << "], V = " << volume();
+    if (set_.meshMotion != "none")
+    {
+        os  << "; mesh: min V/V_start " << minVolumeRatio_
+            << ", max non-orthogonality " << maxNonOrth_ << " deg";
+    }
+    return os.str();
+}
+
+
+void Foam::ALENavierStokes::updateFields()
+{
+    forAll(U_, c)
+    {
+        U_[c] = cellU(x_, c);
+        p_[c] = x_(ip(c));
+    }
+    U_.correctBoundaryConditions();
+    p_.correctBoundaryConditions();
+}
+
+
+bool Foam::ALENavierStokes::write(const word& timeName)
+{
+    // Full precision: the fields and points are the restart state (the
+    // mass of a slightly compressible fluid is exp(p/K) V: six digits of
+    // p and of the points would change it on a restart)
+    const unsigned precision = IOstream::defaultPrecision(17);
+    updateFields();
+    const word Uinstance = U_.instance(), pinstance = p_.instance();
+    U_.instance() = timeName;
+    p_.instance() = timeName;
+    bool ok = U_.write();
+    ok = p_.write() && ok;
+    U_.instance() = Uinstance;
+    p_.instance() = pinstance;
+    if (set_.meshMotion != "none")
+    {
+        pointIOField pts
+        (
+            IOobject
+            (
+                "points", timeName, polyMesh::meshSubDir, mesh_,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            ),
+            mesh_.points()
+        );
+        ok = pts.write() && ok;
+    }
+    IOstream::defaultPrecision(precision);
+    return ok;
+}
+
+
+std::string Foam::ALENavierStokes::unknownName(int j) const
+{
+    const char* names = "xyz";
+    std::ostringstream os;
+    if (j >= nCellUnknowns())
+    {
+        // A mesh unknown: its unit's reference point and direction
+        const fluidSolidInterface& itf = *interface_;
+        const label k = j - nCellUnknowns();
+        forAll(itf.motionUnits(), u)
+        {
+            for (label c = 0; c < 2; ++c)
+            {
+                if (itf.meshUnknown(u, c) != k) continue;
+                const label p = itf.motionUnits()[u][0];
+                const point& x = points00_[p];
+                os  << mesh_.name() << " mesh point (" << x.x() << ' '
+                    << x.y() << ' ' << x.z() << ") displacement "
+                    << (c ? "z (y)" : "r (x)");
+                return os.str();
+            }
+        }
+    }
+    const label c = j/(D_ + 1), k = j % (D_ + 1);
+    os  << mesh_.name() << " cell " << c << ' '
+        << (k == D_ ? std::string("p") : std::string("U") + names[cmp_[k]]);
+    return os.str();
+}
+
+
+std::vector<double> Foam::ALENavierStokes::state() const
+{
+    // The cells' unknowns (the mesh unknowns follow from the points,
+    // written with the fields)
+    const label n = nCellUnknowns();
+    std::vector<double> s(x_.data(), x_.data() + n);
+    s.insert(s.end(), x0_.data(), x0_.data() + n);
+    return s;
+}
+
+
+void Foam::ALENavierStokes::setState(const std::vector<double>& s)
+{
+    const std::size_t n = nCellUnknowns();
+    if (s.size() != 2*n)
+    {
+        throw form::numericalError
+        (
+            "ALENavierStokes::setState: " + std::to_string(s.size())
+          + " values, not " + std::to_string(2*n)
+        );
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        x_(i) = s[i];
+        x0_(i) = s[n + i];
+    }
+}
+
+
+// ************************************************************************* //
