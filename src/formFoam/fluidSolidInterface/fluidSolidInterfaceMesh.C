@@ -11,13 +11,13 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-form::vecX Foam::fluidSolidInterface::interfaceDisplacement
+std::array<form::vecX, 2> Foam::fluidSolidInterface::interfaceDisplacement
 (
     const form::vecX& U
 ) const
 {
     const label nI = pointIds_.size();
-    form::vecX dI = form::vecX::Zero(2*nI);
+    std::array<form::vecX, 2> dI{form::vecX::Zero(nI), form::vecX::Zero(nI)};
     for (label i = 0; i < nI; ++i)
     {
         const solidPoint& sp = pointInterp_[i];
@@ -25,7 +25,7 @@ form::vecX Foam::fluidSolidInterface::interfaceDisplacement
         {
             for (label c = 0; c < 2; ++c)
             {
-                dI(2*i + c) += sp.N[a]*U(dofMap_.dof(sp.nodes[a], c));
+                dI[c](i) += sp.N[a]*U(dofMap_.dof(sp.nodes[a], c));
             }
         }
     }
@@ -38,16 +38,14 @@ form::vecX Foam::fluidSolidInterface::harmonicDisplacement
     const form::vecX& U
 ) const
 {
-    const form::vecX dI = interfaceDisplacement(U);
-    const label nI = pointIds_.size();
+    const std::array<form::vecX, 2> dI = interfaceDisplacement(U);
     form::vecX d(nMeshUnknowns());
     label off = 0;
     for (label c = 0; c < 2; ++c)
     {
         if (nUnknowns_[c])
         {
-            const form::vecX dc = dI(Eigen::seqN(c, nI, 2));
-            d.segment(off, nUnknowns_[c]) = ldlt_[c].solve(-(B_[c]*dc));
+            d.segment(off, nUnknowns_[c]) = ldlt_[c].solve(-(B_[c]*dI[c]));
         }
         off += nUnknowns_[c];
     }
@@ -64,8 +62,7 @@ void Foam::fluidSolidInterface::meshEquations
     std::vector<Eigen::Triplet<double>>* K
 ) const
 {
-    const form::vecX dI = interfaceDisplacement(U);
-    const label nI = pointIds_.size();
+    const std::array<form::vecX, 2> dI = interfaceDisplacement(U);
     r.resize(nMeshUnknowns());
     label start = 0;
     for (label c = 0; c < 2; ++c)
@@ -73,8 +70,7 @@ void Foam::fluidSolidInterface::meshEquations
         const label n = nUnknowns_[c];
         if (n)
         {
-            const form::vecX dc = dI(Eigen::seqN(c, nI, 2));
-            r.segment(start, n) = -(L_[c]*d.segment(start, n) + B_[c]*dc);
+            r.segment(start, n) = -(L_[c]*d.segment(start, n) + B_[c]*dI[c]);
         }
         if (K)
         {
@@ -116,7 +112,7 @@ Foam::tmp<Foam::pointField> Foam::fluidSolidInterface::points
     const form::vecX& d
 ) const
 {
-    const form::vecX dI = interfaceDisplacement(U);
+    const std::array<form::vecX, 2> dI = interfaceDisplacement(U);
     tmp<pointField> tpts(new pointField(points0_));
     pointField& pts = tpts.ref();
     forAll(units_, u)
@@ -127,7 +123,7 @@ Foam::tmp<Foam::pointField> Foam::fluidSolidInterface::points
             const scalar dc =
                 k == freeUnit ? d(meshUnknown(u, c))
               : k == fixedUnit ? 0.0
-              : dI(2*k + c);
+              : dI[c](k);
             if (dc == 0) continue;
             for (const label p : units_[u])
             {
