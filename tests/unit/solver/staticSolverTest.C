@@ -375,6 +375,59 @@ TEST(staticSolver, LooseToleranceAcceptsNoStagnatingStepAsRoundOff)
 }
 
 
+TEST(staticSolver, NearEquilibriumNeedsASmallUpdate)
+{
+    // A step that starts near equilibrium (|r0| <= sqrt(forceTol) times
+    // the load level) is judged by the force criterion alone, on the
+    // premise that its update is small. A Newton direction that is wrong
+    // (here the bar's tangent with the wrong sign, so every update moves
+    // away from equilibrium and the line search cuts it to its floor)
+    // leaves |r| just above |r0|, inside the force tolerance: the step
+    // must not be accepted on it, neither at iteration 1 (near
+    // equilibrium) nor later as stalled (the line search at its floor
+    // with the force criterion holding: accepted only if the update's
+    // energy is small). (The ALE oil at fast injection, whose
+    // scale raises the load level, was accepted in one iteration with an
+    // update of 9 times the predicted work, 2026-11-29.) The same step
+    // with the right tangent is accepted in one iteration.
+    for (const double scale : {1.0, -1.0})
+    {
+        auto law = barLaw(false, 100);
+        solidModel model =
+            pulledBar([](double t) { return 5*(1 + 0.01*t); }, law);
+        auto solver = linearSolver::New("umfpack");
+        newtonControls nc;
+        nc.forceTolerance = 1e-2;   // the bulge's
+        nc.residualLineSearch = true;
+        nc.maxIterations = 6;
+        std::ostringstream log;
+        staticSolver s(model, *solver, nc, {}, log);
+        stepReport report;
+        ASSERT_TRUE(s.solveIncrement(0, 0.5, report)) << log.str();
+        model.commit();
+        std::static_pointer_cast<trussMaterial>(law)->tangentScale = scale;
+        const bool ok = s.solveIncrement(0.5, 1, report);
+        if (scale > 0)
+        {
+            EXPECT_TRUE(ok) << log.str();
+            EXPECT_EQ(report.iterations, 1) << log.str();
+            EXPECT_NEAR(model.U()(2), 5*1.01/100, 1e-12);
+        }
+        else
+        {
+            EXPECT_FALSE(ok) << log.str();
+            EXPECT_GT(std::abs(model.U()(2) - 5*1.01/100), 1e-6);
+            // from iteration 2 on: stalled at the force tolerance, but
+            // with the update's energy ratio > 1
+            EXPECT_NE(log.str().find("energy ratio"), std::string::npos)
+                << log.str();
+            EXPECT_EQ(log.str().find("accepted"), std::string::npos)
+                << log.str();
+        }
+    }
+}
+
+
 TEST(staticSolver, ReactionsAtThePredictedEquilibriumIncludeThePrescribedIncrement)
 {
     // Two linear bars (EA = 100, length 1 each) between a fixed node and
