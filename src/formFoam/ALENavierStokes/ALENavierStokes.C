@@ -528,6 +528,7 @@ void Foam::ALENavierStokes::beginIncrement
 {
     t0_ = t0;
     t1_ = t1;
+    scaleStart_ = -1;
     // The fluid's time step in seconds (timeScale: seconds per unit of
     // the case's time in a quasi-static run)
     dt_ = (t1 - t0)*set_.timeScale;
@@ -575,6 +576,7 @@ void Foam::ALENavierStokes::commit(const form::vecX&)
     x0_ = x_;
     points0_ = mesh_.points();
     V0_ = mesh_.V();
+    pecletSinceCommit_ = peclet_;
 }
 
 

@@ -48,7 +48,10 @@ void Foam::ALENavierStokes::assemble
         Fb_[b] = res.F[nI + b];
         Fw_[b] = res.Fw[b];
     }
-    scale_ = res.scale;
+    if (scaleStart_ < 0) scaleStart_ = res.scale;
+    scale_ = min(res.scale, maxScaleGrowth*scaleStart_);
+    peclet_ = maxFacePeclet();
+    pecletSinceCommit_ = max(pecletSinceCommit_, peclet_);
     if (K) assembleMatrix(g, res.F, off, *K, KI);
 }
 

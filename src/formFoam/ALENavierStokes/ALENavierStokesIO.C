@@ -118,13 +118,53 @@ std::string Foam::ALENavierStokes::report() const
     }
     std::ostringstream os;
     os.precision(6);
-    os  << "max |U| = " << uMax << ", p in [" << pMin << ", " << pMax
+    os  << "max |U| = " << uMax << " (face Peclet number up to "
+        << maxFacePeclet() << "), p in [" << pMin << ", " << pMax
         << "], V = " << volume();
     if (set_.meshMotion != "none")
     {
         os  << "; mesh: min V/V_start " << minVolumeRatio_
             << ", max non-orthogonality " << maxNonOrth_ << " deg";
     }
+    return os.str();
+}
+
+
+Foam::scalar Foam::ALENavierStokes::maxFacePeclet() const
+{
+    const vectorField& S = mesh_.Sf();
+    const vectorField& C = mesh_.C();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    scalar Pe = 0;
+    forAll(nei, f)
+    {
+        const vector u = 0.5*(cellU(x_, own[f]) + cellU(x_, nei[f]));
+        Pe = max
+        (
+            Pe,
+            mag(u & S[f])/mag(S[f])*mag(C[nei[f]] - C[own[f]])
+        );
+    }
+    return set_.rho*Pe/set_.mu;
+}
+
+
+std::string Foam::ALENavierStokes::failureNote() const
+{
+    if (!steady_ || pecletSinceCommit_ <= 2) return std::string();
+    std::ostringstream os;
+    os.precision(3);
+    os  << "The steady momentum equation of " << mesh_.name()
+        << " reached face Peclet numbers of " << pecletSinceCommit_
+        << " in the failed step's iterates (rho |u.n| |d|/mu; above 2"
+        << " the central differencing of convection is unbounded, and a"
+        << " steady flow on"
+        << " this mesh may not exist or not be reachable by Newton's"
+        << " method from the last state). A flow this fast is transient:"
+        << " ddtSchemes { default Euler; } in system/" << mesh_.name()
+        << "/fvSchemes (or slower loading, timeScale in constant/"
+        << mesh_.name() << "/fluidProperties).";
     return os.str();
 }
 

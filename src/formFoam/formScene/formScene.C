@@ -381,8 +381,13 @@ void Foam::formScene::run()
             {
                 writeTime(lastTime, current, currentStep);
             }
+            const std::string note =
+                fluid_ ? fluid_->failureNote() : std::string();
+            const std::string noteLine =
+                note.empty() ? note : "    " + note + "\n";
             FatalErrorInFunction
                 << err.what() << nl
+                << noteLine.c_str()
                 << "    The last converged state (t = " << lastTime
                 << ") is in its time directory; restart from it with"
                 << " startFrom latestTime after changing the step controls"
