@@ -247,6 +247,21 @@ shortCase()
     )
     echo "$x"
 }
+# againstHydrostatic <label> <case>: pole height, pressure and pole
+# thickness at t = 0.3 against the hydrostatic run $hyd, within 0.2 %
+againstHydrostatic()
+{
+    local e what
+    for e in poleHeight pressure poleThickness; do
+        case $e in
+            poleHeight) what="pole height" ;;
+            pressure) what="pressure" ;;
+            poleThickness) what="pole thickness" ;;
+        esac
+        checkClose "$1 vs hydrostatic: $what at t = 0.3" \
+            "$(value "$2" $e)" "$(value "$hyd" $e)" 0.002
+    done
+}
 ale=$(shortCase ALE)
 hyd=$(shortCase)
 grep -q "^forceTolerance\|^energyTolerance" "$ale/system/solidSolution" "$hyd/system/solidSolution" \
@@ -258,12 +273,7 @@ if grep -q '^End' "$ale/log.formFoam" && grep -q '^End' "$hyd/log.formFoam"; the
     [ "$(summaryValue "$ale" fluidModel)" = ALENavierStokes ] \
         && pass "bulge ALE: summary fluidModel ALENavierStokes" \
         || fail "bulge ALE: summary fluidModel is '$(summaryValue "$ale" fluidModel)'"
-    checkClose "bulge ALE vs hydrostatic: pole height at t = 0.3" \
-        "$(value "$ale" poleHeight)" "$(value "$hyd" poleHeight)" 0.002
-    checkClose "bulge ALE vs hydrostatic: pressure at t = 0.3" \
-        "$(value "$ale" pressure)" "$(value "$hyd" pressure)" 0.002
-    checkClose "bulge ALE vs hydrostatic: pole thickness at t = 0.3" \
-        "$(value "$ale" poleThickness)" "$(value "$hyd" poleThickness)" 0.002
+    againstHydrostatic "bulge ALE" "$ale"
     q=$(newtonOrder "$hyd/log.formFoam")
     checkBelow "bulge: Newton order (median over the steps) above 1.8" 1.8 "$q"
     q=$(newtonOrder "$ale/log.formFoam")
@@ -311,12 +321,7 @@ echo "maxCutbacks 5;" >> "$fastSteady/system/solidSolution"
 (cd "$fastSteady" && OMP_NUM_THREADS=1 timeout 600 formFoam > log.formFoam 2>&1)
 if grep -q '^End' "$fast/log.formFoam" && [ -f "$hyd/postProcessing/summary" ]; then
     pass "bulge ALE, fast injection, transient: ran to t = 0.3"
-    checkClose "bulge ALE fast (Euler) vs hydrostatic: pole height at t = 0.3" \
-        "$(value "$fast" poleHeight)" "$(value "$hyd" poleHeight)" 0.002
-    checkClose "bulge ALE fast (Euler) vs hydrostatic: pressure at t = 0.3" \
-        "$(value "$fast" pressure)" "$(value "$hyd" pressure)" 0.002
-    checkClose "bulge ALE fast (Euler) vs hydrostatic: pole thickness at t = 0.3" \
-        "$(value "$fast" poleThickness)" "$(value "$hyd" poleThickness)" 0.002
+    againstHydrostatic "bulge ALE fast (Euler)" "$fast"
     checkBelow "bulge ALE fast (Euler): largest oil speed below 4 times the inflow ($uIn mm/s)" \
         "$(maxSpeed "$fast/log.formFoam")" "$(calc '4*u' u="$uIn")"
 else
