@@ -292,6 +292,16 @@ matX upHex<NN, NP>::massMatrix(const matX& X) const
 
 
 template<int NN, int NP>
+std::vector<double> upHex<NN, NP>::pointVolumes(const matX& X) const
+{
+    checkSize(X, "X");
+    std::vector<double> v;
+    for (const quadraturePoint3D& q : qp_) v.push_back(geometry(X, q, -1).dV);
+    return v;
+}
+
+
+template<int NN, int NP>
 infSupMatrices upHex<NN, NP>::infSup(const matX& X) const
 {
     checkSize(X, "X");

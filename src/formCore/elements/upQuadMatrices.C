@@ -2,8 +2,8 @@
   formFoam: implicit finite-element forming with fluid-structure interaction
 -------------------------------------------------------------------------------
 Description
-    upQuad: mass matrix, inf-sup test matrices and averaged results (the
-    internal force and tangent are in upQuad.C).
+    upQuad: mass matrix, point volumes, inf-sup test matrices and averaged
+    results (the internal force and tangent are in upQuad.C).
 \*---------------------------------------------------------------------------*/
 #include "upQuad.H"
 #include "upElementTools.H"
@@ -33,6 +33,16 @@ matX upQuad<NN, NP>::massMatrix(const matX& X) const
         }
     }
     return M;
+}
+
+
+template<int NN, int NP>
+std::vector<double> upQuad<NN, NP>::pointVolumes(const matX& X) const
+{
+    checkSize(X, "X");
+    std::vector<double> v;
+    for (const quadraturePoint2D& q : qp_) v.push_back(geometry(X, q, -1).dV);
+    return v;
 }
 
 
@@ -102,21 +112,29 @@ elementResult upQuad<NN, NP>::result
 
 // Members defined in this file, for the four registered element types
 template matX upQuad<4, 0>::massMatrix(const matX&) const;
+template std::vector<double> upQuad<4, 0>::pointVolumes(const matX&)
+const;
 template infSupMatrices upQuad<4, 0>::infSup(const matX&) const;
 template elementResult upQuad<4, 0>::result
 (const matX&, const matX&, const material&, const std::vector<materialState>&)
 const;
 template matX upQuad<9, 0>::massMatrix(const matX&) const;
+template std::vector<double> upQuad<9, 0>::pointVolumes(const matX&)
+const;
 template infSupMatrices upQuad<9, 0>::infSup(const matX&) const;
 template elementResult upQuad<9, 0>::result
 (const matX&, const matX&, const material&, const std::vector<materialState>&)
 const;
 template matX upQuad<4, 1>::massMatrix(const matX&) const;
+template std::vector<double> upQuad<4, 1>::pointVolumes(const matX&)
+const;
 template infSupMatrices upQuad<4, 1>::infSup(const matX&) const;
 template elementResult upQuad<4, 1>::result
 (const matX&, const matX&, const material&, const std::vector<materialState>&)
 const;
 template matX upQuad<9, 3>::massMatrix(const matX&) const;
+template std::vector<double> upQuad<9, 3>::pointVolumes(const matX&)
+const;
 template infSupMatrices upQuad<9, 3>::infSup(const matX&) const;
 template elementResult upQuad<9, 3>::result
 (const matX&, const matX&, const material&, const std::vector<materialState>&)

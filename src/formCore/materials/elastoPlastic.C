@@ -178,6 +178,12 @@ double elastoPlastic::equivalentStrain
 }
 
 
+double elastoPlastic::plasticDissipation(const materialState& state) const
+{
+    return plasticity_.hardening().work(state.history(6));
+}
+
+
 bool elastoPlastic::symmetricTangent() const
 {
     return plasticity_.symmetricTangent();

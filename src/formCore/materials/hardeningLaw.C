@@ -155,6 +155,14 @@ double swiftHardening::slope(double epsP) const
 }
 
 
+double swiftHardening::work(double epsP) const
+{
+    // K/(n + 1) ((eps0 + epsP)^(n+1) - eps0^(n+1))
+    return K_/(n_ + 1)
+       *(std::pow(eps0_ + epsP, n_ + 1) - std::pow(eps0_, n_ + 1));
+}
+
+
 double swiftHardening::flowStress(double epsP, double& slope) const
 {
     // slope = n sigmaY/(eps0 + epsP) = K n (eps0 + epsP)^(n-1)
@@ -217,6 +225,14 @@ double voceHardening::sigmaY(double epsP) const
 double voceHardening::slope(double epsP) const
 {
     return (sigmaInf_ - sigmaY0_)*b_*std::exp(-b_*epsP) + H_;
+}
+
+
+double voceHardening::work(double epsP) const
+{
+    // sigmaInf epsP - (sigmaInf - sigmaY0)(1 - exp(-b epsP))/b + H epsP^2/2
+    return sigmaInf_*epsP + (sigmaInf_ - sigmaY0_)*std::expm1(-b_*epsP)/b_
+         + 0.5*H_*epsP*epsP;
 }
 
 
@@ -305,6 +321,21 @@ double tabulatedHardening::slope(double epsP) const
     if (eps_.size() == 1 || epsP >= eps_.back()) return 0;
     const std::size_t i = segment(epsP);
     return (sigma_[i + 1] - sigma_[i])/(eps_[i + 1] - eps_[i]);
+}
+
+
+double tabulatedHardening::work(double epsP) const
+{
+    // Trapezoids of the knots up to epsP (exact: sigmaY is linear between
+    // them), the constant last value beyond the table
+    double w = 0;
+    for (std::size_t i = 0; i + 1 < eps_.size() && eps_[i] < epsP; ++i)
+    {
+        const double b = std::min(epsP, eps_[i + 1]);
+        w += 0.5*(sigma_[i] + sigmaY(b))*(b - eps_[i]);
+    }
+    if (epsP > eps_.back()) w += sigma_.back()*(epsP - eps_.back());
+    return w;
 }
 
 

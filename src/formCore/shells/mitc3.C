@@ -601,4 +601,27 @@ double mitc3::energy(const std::array<shellNodeState, 3>& nodes) const
     return W;
 }
 
+
+
+std::vector<double> mitc3::pointVolumes() const
+{
+    // The points of integrate(), q = nThickness i_p + i_t; the initial
+    // base vectors G do not depend on the node states
+    const std::array<shellNodeState, 3> rest{};
+    const bubbleState restBubble{};
+    std::vector<double> v;
+    Eigen::Matrix<double, 5, 5> T;
+    mat3 Q;
+    for (const quadraturePoint2D& pt : gaussTriangle7())
+    {
+        for (int it = 0; it < nThickness_; ++it)
+        {
+            double detJ;
+            localFrame(at(pt.r, pt.s, zt_[it], rest, restBubble).G, T, Q, detJ);
+            v.push_back(detJ*pt.w*wt_[it]);
+        }
+    }
+    return v;
+}
+
 } // namespace form

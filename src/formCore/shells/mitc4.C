@@ -622,4 +622,27 @@ double mitc4::energy(const std::array<shellNodeState, 4>& nodes) const
     return W;
 }
 
+
+
+std::vector<double> mitc4::pointVolumes() const
+{
+    // The points of integrate(): 2 x 2 Gauss (weights 1) in the lamina,
+    // nThickness through it, q = (2 i_r + i_s) nThickness + i_t
+    const double g = 1/std::sqrt(3.0);
+    std::vector<double> v;
+    mat5 T;
+    mat3 Q;
+    for (double r : {-g, g})
+    for (double s : {-g, g})
+    {
+        for (int it = 0; it < nThickness_; ++it)
+        {
+            double detJ;
+            localFrame(r, s, zt_[it], T, Q, detJ);
+            v.push_back(detJ*wt_[it]);
+        }
+    }
+    return v;
+}
+
 } // namespace form

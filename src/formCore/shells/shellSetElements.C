@@ -104,6 +104,26 @@ bool shellSet::compute
 }
 
 
+double shellSet::plasticDissipation
+(
+    int block,
+    int element,
+    const std::vector<materialState>& states
+) const
+{
+    const std::vector<double> v = npe_[block] == 3
+      ? tris_[block][element].pointVolumes()
+      : quads_[block][element].pointVolumes();
+    const shellLaw& lamina = law(block);
+    double D = 0;
+    for (std::size_t q = 0; q < v.size(); ++q)
+    {
+        D += v[q]*lamina.plasticDissipation(states[q]);
+    }
+    return D;
+}
+
+
 elementResult shellSet::result
 (
     int block,

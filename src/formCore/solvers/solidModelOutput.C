@@ -196,6 +196,45 @@ std::vector<elementResult> solidModel::elementResults() const
     return results;
 }
 
+double solidModel::plasticDissipation() const
+{
+    const impl& m = *impl_;
+    const int nElements = int(m.elemBlock.size());
+    double D = 0;
+    matX X, u;
+    for (int e = 0; e < nElements; ++e)
+    {
+        const impl::blockData& b = m.blocks[m.elemBlock[e]];
+        if (!b.mat || !b.mat->dissipative()) continue;
+        if (!b.kernel)
+        {
+            D += m.shells->plasticDissipation
+            (
+                m.elemBlock[e], m.elemLocal[e], m.committed[e]
+            );
+            continue;
+        }
+        m.gather(e, X, u);
+        const std::vector<double> v = b.kernel->pointVolumes(X);
+        for (std::size_t q = 0; q < v.size(); ++q)
+        {
+            D += v[q]*b.mat->plasticDissipation(m.committed[e][q]);
+        }
+    }
+    return D;
+}
+
+
+bool solidModel::dissipative() const
+{
+    for (const impl::blockData& b : impl_->blocks)
+    {
+        if (b.mat && b.mat->dissipative()) return true;
+    }
+    return false;
+}
+
+
 std::vector<double> solidModel::shellNodeThickness() const
 {
     const impl& m = *impl_;

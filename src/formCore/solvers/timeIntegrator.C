@@ -54,25 +54,6 @@ double timeIntegrator::stageEnd(int stage, double t0, double t1) const
 }
 
 
-namespace
-{
-
-// The external force g of the work integrals: applied loads on the free
-// dofs, the support forces f_int + M a on the prescribed ones (the work
-// of the prescribed motion)
-vecX workForce(const solidModel& model)
-{
-    vecX g = model.externalForce();
-    const vecX& fi = model.internalForce();
-    const vecX& fm = model.inertiaForce();
-    for (int d : model.prescribedDofs())
-    {
-        g(d) = fi(d) + (fm.size() ? fm(d) : 0.0);
-    }
-    return g;
-}
-
-} // namespace
 
 
 void timeIntegrator::initialise(solidModel& model, double t0, const vecX& V0)
@@ -148,10 +129,7 @@ void timeIntegrator::initialise(solidModel& model, double t0, const vecX& V0)
         }
         for (int k = 0; k < nFree; ++k) A_(free[k]) = Af(k);
     }
-    fint_ = model.internalForce();
-    fext_ = workForce(model);
-    fcon_ = model.contactForce();
-    ffri_ = model.frictionForce();
+    work_.start(model);
     energy_ = energyBalance();
     energy_.kinetic = 0.5*V_.dot(model.massMatrix()*V_);
     energy_.initialKinetic = energy_.kinetic;
@@ -239,39 +217,21 @@ void timeIntegrator::endStage
     }
 
     // Work over the stage (trapezoidal quadrature from the previous
-    // stage's end, or the step's start)
-    const vecX& Uprev = stage == 0 ? U_ : Um_;
-    const vecX& fiPrev = stage == 0 ? fint_ : fintNew_;
-    const vecX& gPrev = stage == 0 ? fext_ : fextNew_;
-    const vecX& cPrev = stage == 0 ? fcon_ : fconNew_;
-    const vecX& tPrev = stage == 0 ? ffri_ : ffriNew_;
-    const vecX g = workForce(model);
-    const vecX fc = model.contactForce();
-    const vecX ft = model.frictionForce();
-    const vecX dU = U - Uprev;
-    const double dWint = 0.5*(fiPrev + model.internalForce()).dot(dU);
-    const double dWext = 0.5*(gPrev + g).dot(dU);
-    const double dWcon = 0.5*(cPrev + fc).dot(dU);
-    const double dWfri = 0.5*(tPrev + ft).dot(dU);
+    // stage's end, or the step's start), as the step's increments: they
+    // are summed over the stages first and then added to the integrals
     if (stage == 0)
     {
-        pendingInternal_ = 0;
-        pendingExternal_ = 0;
-        pendingContact_ = 0;
-        pendingFriction_ = 0;
+        pendingWork_ = work_;
+        pendingWork_.internalWork = 0;
+        pendingWork_.externalWork = 0;
+        pendingWork_.contactWork = 0;
+        pendingWork_.frictionWork = 0;
     }
-    pendingInternal_ += dWint;
-    pendingExternal_ += dWext;
-    pendingContact_ += dWcon;
-    pendingFriction_ += dWfri;
-    fconNew_ = fc;
-    ffriNew_ = ft;
+    pendingWork_.add(model);
 
     Unew_ = U;
     Vnew_ = v;
     Anew_ = a;
-    fintNew_ = model.internalForce();
-    fextNew_ = g;
     if (stage == 0)
     {
         Um_ = U;
@@ -286,15 +246,12 @@ void timeIntegrator::commitStep()
     U_ = Unew_;
     V_ = Vnew_;
     A_ = Anew_;
-    fint_ = fintNew_;
-    fext_ = fextNew_;
     energy_.kinetic = pendingKinetic_;
-    energy_.internalWork += pendingInternal_;
-    energy_.externalWork += pendingExternal_;
-    energy_.contactWork += pendingContact_;
-    energy_.frictionWork += pendingFriction_;
-    fcon_ = fconNew_;
-    ffri_ = ffriNew_;
+    energy_.internalWork += pendingWork_.internalWork;
+    energy_.externalWork += pendingWork_.externalWork;
+    energy_.contactWork += pendingWork_.contactWork;
+    energy_.frictionWork += pendingWork_.frictionWork;
+    work_ = pendingWork_;
     Um_ = U_;
     Vm_ = V_;
 }
@@ -310,7 +267,11 @@ void timeIntegrator::revertStep()
 std::vector<double> timeIntegrator::state() const
 {
     std::vector<double> s;
-    for (const vecX* v : {&U_, &V_, &A_, &fint_, &fext_, &fcon_, &ffri_})
+    for
+    (
+        const vecX* v
+      : {&U_, &V_, &A_, &work_.fint, &work_.fext, &work_.fcon, &work_.ffri}
+    )
     {
         s.insert(s.end(), v->data(), v->data() + v->size());
     }
@@ -344,11 +305,16 @@ void timeIntegrator::setState(const std::vector<double>& s)
     }
     const int n = int((s.size() - nEnergies)/nVectors);
     int i = 0;
-    for (vecX* v : {&U_, &V_, &A_, &fint_, &fext_, &fcon_, &ffri_})
+    for
+    (
+        vecX* v
+      : {&U_, &V_, &A_, &work_.fint, &work_.fext, &work_.fcon, &work_.ffri}
+    )
     {
         *v = Eigen::Map<const vecX>(s.data() + i, n);
         i += n;
     }
+    work_.U = U_;
     energy_.kinetic = s[i];
     energy_.internalWork = s[i + 1];
     energy_.externalWork = s[i + 2];

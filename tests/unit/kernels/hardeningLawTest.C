@@ -189,6 +189,57 @@ TEST(hardeningLaw, slopesMatchDifferencesAtRandomPoints)
     }
 }
 
+// The plastic work of the yield surface, W(epsP) = int_0^epsP sigmaY de
+// (the dissipation of the effect report, material.H), against a composite
+// Simpson rule of sigmaY with 20000 intervals (split at the table's knots,
+// where the tabulated law's integrand has kinks)
+TEST(hardeningLaw, workIsTheIntegralOfTheFlowStress)
+{
+    std::vector<std::unique_ptr<hardeningLaw>> laws;
+    laws.push_back(std::make_unique<perfectHardening>(200));
+    laws.push_back(std::make_unique<linearHardening>(200, 900));
+    laws.push_back(std::make_unique<swiftHardening>(600, 0.002, 0.45));
+    laws.push_back(std::make_unique<voceHardening>(200, 350, 30, 10));
+    laws.push_back
+    (
+        hardeningLaw::New(tableDict({{0, 200}, {0.05, 260}, {0.2, 300}}))
+    );
+    const auto simpson = [](const hardeningLaw& law, double a, double b)
+    {
+        const int n = 20000;
+        const double h = (b - a)/n;
+        double s = law.sigmaY(a) + law.sigmaY(b);
+        for (int i = 1; i < n; ++i)
+        {
+            s += (i % 2 ? 4 : 2)*law.sigmaY(a + i*h);
+        }
+        return s*h/3;
+    };
+    for (const auto& law : laws)
+    {
+        EXPECT_EQ(law->work(0), 0) << law->type();
+        for (double x : {1e-4, 0.03, 0.05, 0.12, 0.2, 0.7})
+        {
+            // Knots of the table (and 0.7: beyond its last, constant)
+            double ref = 0, a = 0;
+            for (double knot : {0.05, 0.2})
+            {
+                if (knot < x) { ref += simpson(*law, a, knot); a = knot; }
+            }
+            ref += simpson(*law, a, x);
+            EXPECT_NEAR(law->work(x), ref, 1e-10*ref)
+                << law->type() << " epsP " << x;
+        }
+        // Increasing, and sigmaY is its derivative
+        const double x = 0.1, h = 1e-6;
+        EXPECT_NEAR
+        (
+            (law->work(x + h) - law->work(x - h))/(2*h), law->sigmaY(x),
+            1e-6*law->sigmaY(x)
+        ) << law->type();
+    }
+}
+
 TEST(hardeningLaw, unknownOrMissingTypeNamesTheEntry)
 {
     const std::string msg =

@@ -121,6 +121,40 @@ TEST(triangleRule, sevenPointsIntegrateDegreeFive)
 }
 
 
+// The reference volume of each integration point (one per point, the
+// bubble's state excluded), positive, summing to area x thickness on the
+// flat triangle; on the curved one every rule through the thickness gives
+// the same volume (det J of degree 2 in the thickness coordinate)
+TEST(mitc3, pointVolumesSumToTheVolume)
+{
+    for (bool curved : {false, true})
+    {
+        const testTriangle T(curved);
+        double first = 0;
+        for (int n : {2, 3, 5})
+        {
+            const mitc3 el = T.element(n);
+            const std::vector<double> v = el.pointVolumes();
+            ASSERT_EQ(int(v.size()), el.nQuadrature());
+            double sum = 0;
+            for (double vq : v)
+            {
+                EXPECT_GT(vq, 0);
+                sum += vq;
+            }
+            if (n == 2) first = sum;
+            EXPECT_NEAR(sum, first, 1e-14) << n;
+            if (!curved)
+            {
+                const double area =
+                    0.5*((T.X(1, 0) - T.X(0, 0))*(T.X(2, 1) - T.X(0, 1))
+                       - (T.X(2, 0) - T.X(0, 0))*(T.X(1, 1) - T.X(0, 1)));
+                EXPECT_NEAR(sum, 0.1*area, 1e-14) << n;
+            }
+        }
+    }
+}
+
 TEST(mitc3, fullForcesAndTangentMatchCentralDifferences)
 {
     // The 17 dofs with the bubble's rotations (phi) as free unknowns

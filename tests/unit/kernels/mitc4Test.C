@@ -358,6 +358,46 @@ TEST(mitc4, lobattoPointsThroughTheThickness)
 }
 
 
+// The reference volume of each integration point (weights of volume
+// integrals of point values: the plastic dissipation of the effect
+// report): one per point, positive, summing to area x thickness for the
+// flat element; on the warped one det J is a polynomial of degree 2 in
+// the thickness coordinate, so every rule through the thickness gives
+// the same volume
+TEST(mitc4, pointVolumesSumToTheVolume)
+{
+    for (bool warped : {false, true})
+    {
+        const testElement T(warped);
+        double first = 0;
+        for (int n : {2, 3, 5})
+        {
+            const mitc4 el = T.element(n);
+            const std::vector<double> v = el.pointVolumes();
+            ASSERT_EQ(int(v.size()), el.nQuadrature());
+            double sum = 0;
+            for (double vq : v)
+            {
+                EXPECT_GT(vq, 0);
+                sum += vq;
+            }
+            if (n == 2) first = sum;
+            EXPECT_NEAR(sum, first, 1e-14) << n;
+            if (!warped)
+            {
+                // Shoelace area of the flat quadrilateral, thickness 0.1
+                double area = 0;
+                for (int k = 0; k < 4; ++k)
+                {
+                    const int j = (k + 1) % 4;
+                    area += 0.5*(T.X(k, 0)*T.X(j, 1) - T.X(j, 0)*T.X(k, 1));
+                }
+                EXPECT_NEAR(sum, 0.1*area, 1e-14) << n;
+            }
+        }
+    }
+}
+
 TEST(mitc4, freeElementHasSixZeroEnergyModes)
 {
     for (bool plus : {false, true})

@@ -242,6 +242,29 @@ TEST(upHex, massMatrixIntegratesVolume)
 }
 
 
+// The reference volume of each quadrature point: positive, one per point,
+// summing to the element's volume (as its mass matrix integrates it)
+TEST(upHex, pointVolumesSumToTheVolume)
+{
+    std::mt19937 rng(15);
+    for (const std::string& type : hexTypes)
+    {
+        const auto el = solidElement::New(type, analysisType::solid3D);
+        const matX X = randomHex(el->nNodes(), rng);
+        const std::vector<double> v = el->pointVolumes(X);
+        ASSERT_EQ(int(v.size()), el->nQuadrature()) << type;
+        double sum = 0;
+        for (double vq : v)
+        {
+            EXPECT_GT(vq, 0) << type;
+            sum += vq;
+        }
+        const double volume = el->massMatrix(X).sum()/3;
+        EXPECT_NEAR(sum, volume, 1e-12*volume) << type;
+    }
+}
+
+
 // Hex27P4 extruded one element thick (0 <= z <= 1) under a deformation
 // that does not depend on z (u_z = 0): plane strain. Every layer of nodes
 // carries the Q9P3 forces times int N_k dz (1/6, 2/3, 1/6), and the

@@ -188,6 +188,34 @@ TEST(upQuad, massMatrixIntegratesVolume)
     }
 }
 
+// The reference volume of each quadrature point (the weights of volume
+// integrals of point values, e.g. the plastic dissipation of the effect
+// report): positive, one per point, summing to the element's volume
+TEST(upQuad, pointVolumesSumToTheVolume)
+{
+    Eigen::Matrix<double, 4, 2> c;
+    c << 1.0, 0.0, 2.5, 0.2, 2.2, 1.4, 1.1, 0.9;
+    for (const std::string& type : types)
+    {
+        for (const analysisType a : analyses)
+        {
+            const auto el = solidElement::New(type, a);
+            const matX X = el->nNodes() == 4 ? test::quadNodes<4>(c)
+                                             : test::quadNodes<9>(c);
+            const std::vector<double> v = el->pointVolumes(X);
+            ASSERT_EQ(int(v.size()), el->nQuadrature()) << type;
+            double sum = 0;
+            for (double vq : v)
+            {
+                EXPECT_GT(vq, 0) << type;
+                sum += vq;
+            }
+            const double volume = el->massMatrix(X).sum()/2;
+            EXPECT_NEAR(sum, volume, 1e-12*volume) << type;
+        }
+    }
+}
+
 TEST(upQuad, resultOfHomogeneousDeformation)
 {
     // Homogeneous plane deformation F0: every element type returns the
