@@ -381,6 +381,7 @@ void contactModel::commit(const vecX& U)
     if (m.nDim == 3)
     {
         for (auto& p : m.pairs) m.commit3D(p, U);
+        m.addFrictionDissipation();
         m.Ucommitted = U;
         return;
     }
@@ -410,7 +411,34 @@ void contactModel::commit(const vecX& U)
             p.lastSlip[a] = P.tangent.dot(delta);
         }
     }
+    m.addFrictionDissipation();
     m.Ucommitted = U;
+}
+
+
+void contactModel::impl::addFrictionDissipation()
+{
+    // The friction force at the end of the (sub-)step times its slip
+    // (backward Euler, the rule of the friction law itself): k |tau| is
+    // the node's tangential force (pairResults), lastSlip the slip
+    // relative to the tool or target (3D: its magnitude)
+    for (const pairData& p : pairs)
+    {
+        if (!p.active || p.perNode < 2) continue;
+        for (std::size_t a = 0; a < p.nodes.size(); ++a)
+        {
+            const int il = p.first + p.perNode*int(a);
+            const double tau = p.perNode == 3
+              ? std::hypot(x(il + 1), x(il + 2)) : std::abs(x(il + 1));
+            frictionDissipation += k*tau*std::abs(p.lastSlip[a]);
+        }
+    }
+}
+
+
+double contactModel::frictionDissipation() const
+{
+    return impl_->frictionDissipation;
 }
 
 

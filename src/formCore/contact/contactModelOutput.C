@@ -257,6 +257,7 @@ std::vector<double> contactModel::state() const
     }
     for (bool r : m.toolReleased) s.push_back(r ? 1 : 0);
     s.push_back(m.tCommitted);
+    s.push_back(m.frictionDissipation);
     return s;
 }
 
@@ -269,7 +270,9 @@ void contactModel::setState(const std::vector<double>& s)
     {
         expected += p.nodes.size()*(m.nDim == 3 ? 10 : 1) + 2;
     }
-    if (s.size() != expected)
+    // (+1: the friction dissipation, absent from states written before
+    // 2026-11-29, which restart with none dissipated)
+    if (s.size() != expected && s.size() != expected + 1)
     {
         throw numericalError
         (
@@ -298,6 +301,7 @@ void contactModel::setState(const std::vector<double>& s)
         m.toolReleased[T] = s[i++] > 0.5;
     }
     m.tCommitted = s[i++];
+    m.frictionDissipation = i < s.size() ? s[i++] : 0.0;
     // A commit() right after a restart (formScene commits the read state)
     // must keep this time: it is the start of the next slip-rate interval
     m.tEvaluated = m.tCommitted;
