@@ -56,6 +56,10 @@ tryCase "unknown boundary condition" "Unknown boundary condition type 'fixed'" \
     "sed -i 's/left            { type fixedDisplacement; }/left { type fixed; }/' 0/solid/D"
 tryCase "patch without condition" "No boundary condition for patch 'top'" \
     "sed -i '/^    top /d' 0/solid/D"
+tryCase "effect threshold out of range" "Entry 'effectThreshold' in .*solidSolution.* is out of range: 2 > 1" \
+    "foamDictionary -entry effectThreshold -add 2 system/solidSolution >/dev/null"
+tryCase "effect threshold not positive" "Entry 'effectThreshold' in .*solidSolution.* must be positive, got 0" \
+    "foamDictionary -entry effectThreshold -add 0 system/solidSolution >/dev/null"
 tryCase "unknown linear solver" "Entry 'linearSolver' in solidSolution: unknown linearSolver 'mumps'; valid: cholmod umfpack sparseLU auto" \
     "foamDictionary -entry linearSolver -set mumps system/solidSolution >/dev/null"
 tryCase "missing mesh" "Solid region 'solid' has no mesh: constant/solid/polyMesh/points is missing; run blockMesh -region solid" \

@@ -13,7 +13,9 @@
 # continuous run; the same bar impacting a rigid wall (contact: force,
 # duration and rebound of the wave solution, no spurious contact-force
 # oscillation with the Bathe scheme); friction work of a block sliding
-# under a push; bad input.
+# under a push; the effect report (inertia matters in the impact, friction
+# dissipates mu N/P of the push's work, a restart continues the report);
+# bad input.
 . "$(dirname "$0")/testFunctions"
 
 newCase()
@@ -147,9 +149,24 @@ if [ -d "$bathe/20" ]; then
             "$(summary "$r" tipAt40)" "$(summary "$bathe" tipAt40)" 1e-10
         checkClose "bathe restart: wall force min vs continuous run" \
             "$(summary "$r" wallForceMin)" "$(summary "$bathe" wallForceMin)" 1e-10
+        checkClose "bathe restart: effect report, largest kinetic / internal energy vs continuous run" \
+            "$(effectValue "$r" inertia kineticToInternal)" \
+            "$(effectValue "$bathe" inertia kineticToInternal)" 1e-5
         checkClose "bathe restart: external work at t = 40 vs continuous run" \
             "$(awk '!/^#/ { v = $4 } END { print v }' "$r/postProcessing/energy.dat")" \
             "$(awk '!/^#/ { v = $4 } END { print v }' "$bathe/postProcessing/energy.dat")" 1e-10
+        # A state written before the effect report existed (no effects
+        # entry): the run continues and its report says it starts at the
+        # restart
+        rm -rf "$r/30" "$r/40" "$r/postProcessing/effects"
+        foamDictionary -entry effects -remove "$r/20/uniform/formFoamState" > /dev/null 2>&1
+        if (cd "$r" && formFoam > log.restart2 2>&1) \
+            && grep -q "from the restart at t = 20" "$r/postProcessing/effects"
+        then
+            pass "bathe restart from a state without an effect report: the report covers the run from t = 20"
+        else
+            fail "bathe restart from a state without an effect report (see $r/log.restart2)"
+        fi
     else
         fail "bathe restart at t = 20 (see $r/log.restart)"
         tail -15 "$r/log.restart" | sed 's/^/    | /'
@@ -184,6 +201,13 @@ if impactRun "$impact"; then
     checkClose "impact, bathe: left end at the wall at t = 20" "$(summary "$impact" leftAt20)" -0.01 0.01
     checkClose "impact, bathe: right end stopped at t = 20" "$(summary "$impact" rightAt20)" -0.02 0.03
     checkBelow "impact, bathe: rebound with -v0 (|u_right(40)| / 0.02)"         "$(calc 'abs(u/0.02)' u="$(summary "$impact" rightAt40)")" 0.05
+    # The effect report: inertia matters (the kinetic energy turns into
+    # strain energy at t = 20 and back: largest T / largest W_int = 1;
+    # observed 1.02), the wall is touched
+    checkEffect "impact: effect report" "$impact" inertia kineticToInternal matters
+    checkBetween "impact: largest kinetic energy / largest internal work" \
+        "$(effectValue "$impact" inertia kineticToInternal)" 0.9 1.1
+    checkEffect "impact: effect report" "$impact" contact:wall touched matters
     # The trapezoidal rule: the contact force rings (spurious, undamped)
     trapImpact=$(newCase barImpact)
     setEntry "$trapImpact" integrator trapezoidal
@@ -236,6 +260,12 @@ if (cd "$slide" && blockMesh -region block > log.blockMesh 2>&1 && formFoam > lo
     checkClose "sliding (dynamic): friction work = -mu N d" "$fri" "$(calc '-60*d' d="$d")" 0.01
     checkBelow "sliding (dynamic): work of the normal contact force / kinetic energy" \
         "$(calc 'abs((c - f)/k)' c="$con" f="$fri" k="$kin")" 1e-3
+    # The effect report: friction dissipates mu N d of the work P d the
+    # push supplies (the work done on the block is P d - mu N d), so
+    # D_f/(W_ext + D_f) = mu N/P = 0.5 (contactModel::frictionDissipation:
+    # the nodes' tangential forces times their slips over the steps)
+    checkClose "sliding (dynamic): effect report, friction dissipation / supplied work = mu N/P" \
+        "$(effectValue "$slide" friction frictionDissipation)" 0.5 0.01
 else
     reportFailure "dynamic sliding block" "$slide"
 fi

@@ -274,6 +274,16 @@ if grep -q '^End' "$ale/log.formFoam" && grep -q '^End' "$hyd/log.formFoam"; the
         && pass "bulge ALE: summary fluidModel ALENavierStokes" \
         || fail "bulge ALE: summary fluidModel is '$(summaryValue "$ale" fluidModel)'"
     againstHydrostatic "bulge ALE" "$ale"
+    # The effect report: the slow oil loads the blank with a uniform
+    # pressure, so the hydrostatic model would do; the hydrostatic run has
+    # no fluid measures (a uniform pressure is its model); the blank's
+    # plastic flow matters in both
+    checkEffect "bulge ALE: effect report" "$ale" fluid pressureSpread negligible
+    checkEffect "bulge ALE: effect report" "$ale" fluid viscousTraction negligible
+    checkEffect "bulge: effect report" "$hyd" plasticity plasticDissipation matters
+    [ -z "$(effectValue "$hyd" fluid pressureSpread)" ] && [ -f "$hyd/postProcessing/effects" ] \
+        && pass "bulge hydrostatic: the effect report has no fluid measures" \
+        || fail "bulge hydrostatic: effect report missing or with fluid measures"
     q=$(newtonOrder "$hyd/log.formFoam")
     checkBelow "bulge: Newton order (median over the steps) above 1.8" 1.8 "$q"
     q=$(newtonOrder "$ale/log.formFoam")

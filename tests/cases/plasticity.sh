@@ -10,7 +10,10 @@
 # 2. One load step of log strain 0.5 (plane-strain tension of a block,
 #    Swift hardening) converges, and the force matches the homogeneous
 #    solution (incompressible plastic flow: sigma = 2/sqrt(3) sigma_y(eps),
-#    eps = 2/sqrt(3) * 0.5, width 1/lambda; elastic strains neglected).
+#    eps = 2/sqrt(3) * 0.5, width 1/lambda; elastic strains neglected);
+#    the effect report says plasticity matters.
+# 3. The block stretched elastically: the effect report says the run
+#    stayed elastic.
 . "$(dirname "$0")/testFunctions"
 prandtl=$(awk 'BEGIN { printf "%.10g", (2 + atan2(0, -1))/sqrt(3) }')
 
@@ -100,4 +103,19 @@ ref=$(awk -v l="$lambda" 'BEGIN { e = 2/sqrt(3)*0.5; printf "%.10g", 2/sqrt(3)*5
 checkClose "log strain 0.5 in one step: force vs homogeneous solution" \
     "$(summaryValue "$d" topForce)" "$ref" 0.005
 echo "    one-step Newton iterations: $(summaryValue "$d" newtonIterations)"
+checkEffect "log strain 0.5: effect report" "$d" plasticity plasticDissipation matters
+
+# 3. The same block stretched by 1e-4 (the Swift yield strain is
+#    500 x 0.01^0.25/E = 7.9e-4) stays elastic: the effect report says so
+#    (no plastic dissipation at all, verdict negligible)
+for t in "$d"/[0-9]*; do [ "$(basename "$t")" = 0 ] || rm -rf "$t"; done
+rm -rf "$d/postProcessing" "$d/VTK"
+sed -i "s/displacement table ((0 (0 0 0)) (1 (0 [^ ]* 0)))/displacement table ((0 (0 0 0)) (1 (0 1e-4 0)))/" "$d/0/block/D"
+(cd "$d" && formFoam > log.formFoam.elastic 2>&1) \
+    || fail "stretch 1e-4 (see $d/log.formFoam.elastic)"
+checkEffect "stretch 1e-4: effect report" "$d" plasticity plasticDissipation negligible
+[ "$(effectValue "$d" plasticity plasticDissipation)" = 0 ] \
+    && grep -q "^plasticity plasticDissipation .*the run stayed elastic" "$d/postProcessing/effects" \
+    && pass "stretch 1e-4: the run stayed elastic (no dissipation)" \
+    || fail "stretch 1e-4: plastic dissipation '$(effectValue "$d" plasticity plasticDissipation)', the report does not say the run stayed elastic"
 [ -n "${KEEP:-}" ] && echo "    kept $d" || rm -rf "$d"

@@ -67,6 +67,11 @@ checkClose "CFD1: outflow = inflow (mass conservation; the inflow, the parabola'
     || fail "CFD1: summary fluidModel is '$(summaryValue "$c2" fluidModel)'"
 grep -q 'solid: none declared' "$c2/log.formFoam" \
     && pass "CFD1: the scene builds no solid" || fail "CFD1: scene print-out"
+# The fluid alone is the whole scene: no declared effect to weigh
+n=$(awk '!/^#/' "$c2/postProcessing/effects" 2>/dev/null | wc -l)
+[ -f "$c2/postProcessing/effects" ] && [ "$n" = 0 ] \
+    && pass "CFD1: the effect report has nothing to weigh" \
+    || fail "CFD1: effect report missing or with $n lines"
 
 #- FSI1: the tutorial's mesh and the coarse one
 f1=$(caseCopy turekHronFSI1)
@@ -92,6 +97,9 @@ if grep -q '^End' "$f1/log.formFoam" && grep -q '^End' "$f0/log.formFoam"; then
         "$(tangentError "$f0/log.formFoam")" 3e-7
     checkBelow "FSI1: the elastic flag's lift is below the rigid one's (CFD1)" \
         "$(summaryValue "$f1" lift)" "$l2"
+    # The effect report: the flow's load on the flag is no uniform
+    # pressure (the drag is the flow's), a hydrostatic fluid would not do
+    checkEffect "FSI1: effect report" "$f1" fluid pressureSpread matters
     [ "$(summaryValue "$f1" steps)" = 1 ] && pass "FSI1: one steady step" \
         || fail "FSI1: $(summaryValue "$f1" steps) steps"
 else

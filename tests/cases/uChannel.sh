@@ -188,6 +188,10 @@ then
         "$(value "$d" punchForceMax)" "$(value "$static" punchForceMax)" 0.05
     checkBelow "U-channel dynamic: largest kinetic energy / work on the blank" \
         "$(awk '!/^#/ { if ($2 > k) k = $2; w = $4 } END { printf "%.3g", k/w }' "$d/postProcessing/energy.dat")" 1e-5
+    # The effect report says so too (largest kinetic energy / largest
+    # internal work), and that the plastic flow matters
+    checkEffect "U-channel dynamic: effect report" "$d" inertia kineticToInternal negligible
+    checkEffect "U-channel dynamic: effect report" "$d" plasticity plasticDissipation matters
 else
     fail "U-channel dynamic run (see $d/log.formFoam)"
     tail -15 "$d/log.formFoam" | sed 's/^/    | /'

@@ -79,6 +79,42 @@ Foam::vector Foam::ALENavierStokes::patchForce(const word& patch) const
 }
 
 
+Foam::ALENavierStokes::interfaceLoad
+Foam::ALENavierStokes::interfaceLoadMeasures() const
+{
+    interfaceLoad m;
+    if (!interface_ || Fw_.empty()) return m;
+    const labelList& faces = interface_->faces();
+    const label nI = mesh_.nInternalFaces();
+    const vectorField& Sf = mesh_.faceAreas();
+    scalar pA = 0, A = 0, pMin = GREAT, pMax = -GREAT;
+    scalar pressureForce = 0, viscousForce = 0;
+    forAll(faces, j)
+    {
+        const label f = faces[j];
+        const scalar p = cellPressure(mesh_.faceOwner()[f]);
+        const vector Fp = p*Sf[f];
+        pA += p*mag(Sf[f]);
+        A += mag(Sf[f]);
+        pMin = min(pMin, p);
+        pMax = max(pMax, p);
+        pressureForce += mag(Fp);
+        viscousForce += mag(Fw_[f - nI] - Fp);
+    }
+    if (A <= 0) return m;
+    m.valid = true;
+    m.meanPressure = pA/A;
+    const scalar spread = pMax - pMin;
+    m.pressureSpread =
+        mag(m.meanPressure) > VSMALL ? spread/mag(m.meanPressure)
+      : spread > 0 ? GREAT : 0;
+    m.viscousRatio =
+        pressureForce > VSMALL ? viscousForce/pressureForce
+      : viscousForce > 0 ? GREAT : 0;
+    return m;
+}
+
+
 std::string Foam::ALENavierStokes::describe() const
 {
     std::ostringstream os;

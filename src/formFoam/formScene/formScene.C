@@ -115,6 +115,13 @@ void Foam::formScene::run()
     // After a restart the history before it is kept and replayed, so
     // that statistics (max, min) and values at earlier times stand
     const bool replayed = restarted_ && replayHistory(steps_.startTime);
+    // The effect report from the start, or continued from the restart
+    // state (readRunState); a state written before the report existed
+    // starts it at the restart time
+    if (!restarted_ || !effectsRestored_)
+    {
+        effects_.start(model, restarted_ ? steps_.startTime : -1);
+    }
     if (restarted_ && solids_.size()) solids_[0].resumeVTK(steps_.startTime);
     recordSummary(steps_.startTime, !replayed);
 
@@ -317,6 +324,11 @@ void Foam::formScene::run()
                             << e.finiteDifference << ")" << endl;
                     }
                     recordSummary(r.time, false);
+                    effects_.record
+                    (
+                        model, stepDynamic ? integrator_.get() : nullptr,
+                        fluid_.get()
+                    );
                     if (stepDynamic) writeEnergy(r.time);
 
                     const bool last = r.time >= ps.endTime - 1e-12;
@@ -405,6 +417,18 @@ void Foam::formScene::run()
 
     if (contact_) contact_->reportUntouched();
     reportTangentChecks();
+    {
+        const fileName dir = runTime_.path()/"postProcessing";
+        mkDir(dir);
+        effects_.write
+        (
+            effects_.lines
+            (
+                model, contact_.get(), bool(integrator_), fluid_.get()
+            ),
+            dir/"effects"
+        );
+    }
     const form::phaseTimes& t = model.times();
     Info<< nl << "Time per phase (s)" << nl
         << "    assembly        " << t.assembly << nl

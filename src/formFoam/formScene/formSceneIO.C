@@ -247,6 +247,12 @@ void Foam::formScene::readRunState()
     {
         stepWallTimes_.push_back({e.keyword(), readScalar(e.stream())});
     }
+    // (restart files written before 2026-11-29 have no effect report)
+    if (solids_.size() || fluidOnlyModel_)
+    {
+        effectsRestored_ =
+            effects_.setState(d.subOrEmptyDict("effects"), model());
+    }
     resumeStep_ = d.get<word>("processStep");
     resume_.deltaT = d.get<scalar>("deltaT");
     resume_.lastDeltaT = d.get<scalar>("lastDeltaT");
@@ -342,6 +348,7 @@ void Foam::formScene::writeTime
             "wallTime", totals_.wallTime + clock_.elapsedTime() - runStart_
         );
         d.add("forceLevel", model().forceLevel());
+        d.add("effects", effects_.state());
         dictionary sw;
         for (const auto& w : stepWallTimes_) sw.add(w.first, w.second);
         d.add("stepWallTimes", sw);

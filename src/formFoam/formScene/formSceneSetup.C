@@ -48,7 +48,7 @@ void Foam::formScene::readSolution()
             "lineSearchMemory", "predictor",
             "growthFactor",
             "growthIterations", "summary", "integrator", "gamma", "mass",
-            "initialVelocity"
+            "initialVelocity", "effectThreshold"
         }
     );
     const word analysis = d.getOrDefault<word>("analysis", "static");
@@ -195,6 +195,16 @@ void Foam::formScene::readSolution()
         "a relative tolerance; 1e-14 is the default"
     );
     below("maxIterations", newton_.maxIterations, 1000, "Newton iterations");
+    const scalar effectThreshold =
+        d.getOrDefault<scalar>("effectThreshold", 0.01);
+    positive("effectThreshold", effectThreshold);
+    below
+    (
+        "effectThreshold", effectThreshold, 1,
+        "the relative influence below which the effect report calls a"
+        " declared effect negligible; 0.01 is the default"
+    );
+    effects_ = effectReport(effectThreshold);
     if (!(steps_.maxCutbacks >= 0 && steps_.easyIterations >= 0))
     {
         FatalIOErrorInFunction(d)

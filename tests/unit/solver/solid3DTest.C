@@ -12,6 +12,7 @@
 #include "hexShape.H"
 #include "quadShape.H"
 #include "formError.H"
+#include "unitCube.H"
 #include <gtest/gtest.h>
 #include <sstream>
 
@@ -46,41 +47,12 @@ TEST(faceLoad, consistentForcesOnAFlatFace)
 }
 
 
-namespace
-{
-
-//- One Hex27P4 element on the unit cube [0,1]^3 with the node sets x0,
-//  y0, z0 of its faces x = 0, y = 0, z = 0 (the symmetry planes)
-feMesh unitCube(const std::string& material)
-{
-    feMesh mesh;
-    mesh.nDim = 3;
-    mesh.X.resize(27, 3);
-    for (int a = 0; a < 27; ++a)
-    {
-        mesh.X.row(a) = 0.5*(hexShape<27>::node(a) + vec3::Ones()).transpose();
-    }
-    elementBlock b;
-    b.name = "cube";
-    b.elementType = "Hex27P4";
-    b.materialName = material;
-    b.nodesPerElement = 27;
-    for (int a = 0; a < 27; ++a) b.connectivity.push_back(a);
-    mesh.blocks.push_back(b);
-    mesh.nodeSets["x0"] = hexFaceNodes(27, 0);
-    mesh.nodeSets["y0"] = hexFaceNodes(27, 2);
-    mesh.nodeSets["z0"] = hexFaceNodes(27, 4);
-    return mesh;
-}
-
-} // anonymous namespace
+using test::unitCube;
 
 
 TEST(solid3D, uniaxialTractionOnAHex27P4Cube)
 {
     feMesh mesh = unitCube("steel");
-    // Face r = +1 of the element: x = 1
-    mesh.faceSets["right"].push_back({0, 0, 1, hexFaceNodes(27, 1)});
 
     const double E = 200, nu = 0.3, sigma = 10;
     std::map<std::string, std::shared_ptr<material>> mats;

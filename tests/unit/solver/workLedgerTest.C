@@ -15,7 +15,7 @@
 //   trapezoidal rule's error over the 40 + 40 steps.
 #include "staticSolver.H"
 #include "workLedger.H"
-#include "hexShape.H"
+#include "unitCube.H"
 #include "shellTestTools.H"
 #include <gtest/gtest.h>
 #include <cmath>
@@ -35,25 +35,11 @@ solidModel pulledCube
     const std::function<double(double)>& P
 )
 {
-    feMesh mesh;
-    mesh.nDim = 3;
-    mesh.X.resize(27, 3);
-    for (int a = 0; a < 27; ++a)
-    {
-        mesh.X.row(a) = 0.5*(hexShape<27>::node(a) + vec3::Ones()).transpose();
-    }
-    elementBlock b;
-    b.name = "cube";
-    b.elementType = "Hex27P4";
-    b.materialName = "steel";
-    b.nodesPerElement = 27;
-    for (int a = 0; a < 27; ++a) b.connectivity.push_back(a);
-    mesh.blocks.push_back(b);
-    mesh.faceSets["right"].push_back({0, 0, 1, hexFaceNodes(27, 1)});
+    const feMesh mesh = test::unitCube("steel");
     solidModel model(mesh, analysisType::solid3D, {{"steel", mat}});
-    model.addConstraint(hexFaceNodes(27, 0), 0);
-    model.addConstraint(hexFaceNodes(27, 2), 1);
-    model.addConstraint(hexFaceNodes(27, 4), 2);
+    model.addConstraint(mesh.nodeSets.at("x0"), 0);
+    model.addConstraint(mesh.nodeSets.at("y0"), 1);
+    model.addConstraint(mesh.nodeSets.at("z0"), 2);
     model.addTraction("right", [P](double t) { return vec3(P(t), 0, 0); });
     model.finalise();
     return model;
