@@ -528,6 +528,10 @@ deformablePunch()
             || fail "elastic punch ($label, $np): $nClosed of $n contactor nodes closed"
         checkBelow "elastic punch ($label, $np): max |p - p_exact|/p_exact" "$dev" "$ptol"
         punchForceChecks "$label, $np" "$F" "$Fb" "$ftol" "$its" "$steps"
+        # The effect report names the pair between the two bodies
+        if [ "$np" = 8 ]; then
+            checkEffect "elastic punch: effect report" "$c" contact:punchBlock touched matters
+        fi
     else
         reportFailure "elastic punch run ($label, $np)" "$c"
     fi

@@ -195,6 +195,16 @@ bool contactModel::touched(const std::string& tool) const
     return false;
 }
 
+bool contactModel::pairTouched(const std::string& pair) const
+{
+    const impl& m = *impl_;
+    for (std::size_t i = 0; i < m.pairSpecs.size(); ++i)
+    {
+        if (m.pairSpecs[i].name == pair) return m.pairs[i].touched;
+    }
+    throw numericalError("contactModel::pairTouched: no pair '" + pair + "'");
+}
+
 double contactModel::stiffness() const { return impl_->k; }
 double contactModel::epsilonN() const { return impl_->epsN; }
 double contactModel::epsilonT() const { return impl_->epsT; }

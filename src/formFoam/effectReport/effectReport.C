@@ -234,6 +234,20 @@ std::vector<Foam::effectReport::line> Foam::effectReport::lines
                 " check its profile, motion and pairs)";
             out.push_back(l);
         }
+        // Pairs between deformable bodies (no tool)
+        for (const form::contactPairSpec& p : cm.pairs())
+        {
+            if (!p.tool.empty()) continue;
+            line l;
+            l.effect = "contact:" + p.name;
+            l.measure = "touched";
+            l.matters = cm.pairTouched(p.name);
+            l.value = l.matters ? 1 : 0;
+            l.note = l.matters
+              ? "the bodies touched"
+              : "the bodies never touched: the pair is not needed";
+            out.push_back(l);
+        }
     }
     if (fluid && maxPressureSpread_ >= 0)
     {
