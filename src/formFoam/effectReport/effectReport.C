@@ -221,32 +221,39 @@ std::vector<Foam::effectReport::line> Foam::effectReport::lines
                 {{"D_f", D}, {"W_ext", work_.externalWork}}
             );
         }
-        for (const form::rigidToolSpec& tool : cm.tools())
+        // A yes/no line: did the tool's pairs (the pair) ever close?
+        const auto touched = [&]
+        (
+            const std::string& name, bool yes, const std::string& whoYes,
+            const std::string& whoNo
+        )
         {
             line l;
-            l.effect = "contact:" + tool.name;
+            l.effect = "contact:" + name;
             l.measure = "touched";
-            l.matters = cm.touched(tool.name);
-            l.value = l.matters ? 1 : 0;
-            l.note = l.matters
-              ? "the tool touched the body"
-              : "the tool never touched the body: it is not needed (or"
-                " check its profile, motion and pairs)";
+            l.matters = yes;
+            l.value = yes ? 1 : 0;
+            l.note = yes ? whoYes : whoNo;
             out.push_back(l);
+        };
+        for (const form::rigidToolSpec& tool : cm.tools())
+        {
+            touched
+            (
+                tool.name, cm.touched(tool.name), "the tool touched the body",
+                "the tool never touched the body: it is not needed (or check"
+                " its profile, motion and pairs)"
+            );
         }
         // Pairs between deformable bodies (no tool)
         for (const form::contactPairSpec& p : cm.pairs())
         {
             if (!p.tool.empty()) continue;
-            line l;
-            l.effect = "contact:" + p.name;
-            l.measure = "touched";
-            l.matters = cm.pairTouched(p.name);
-            l.value = l.matters ? 1 : 0;
-            l.note = l.matters
-              ? "the bodies touched"
-              : "the bodies never touched: the pair is not needed";
-            out.push_back(l);
+            touched
+            (
+                p.name, cm.pairTouched(p.name), "the bodies touched",
+                "the bodies never touched: the pair is not needed"
+            );
         }
     }
     if (fluid && maxPressureSpread_ >= 0)
