@@ -21,6 +21,8 @@
 #     flange is compressed the most);
 #   - Newton converges quadratically at the end of the steps (observed
 #     order, median over the steps, at least 1.8);
+#   - the effect report: plasticity and friction matter (the shells'
+#     plastic dissipation);
 #   - summary type maxDisplacement: the flange edges' largest in-plane
 #     displacement is at least the draw-in at the edge's point on the
 #     axis (drawInX) and below twice it; the largest displacement since
@@ -51,6 +53,11 @@ if runCopy squareCup "$c" blank && [ -f "$c/postProcessing/summary" ]; then
         "$(v edgeDrawIn)" "$(v drawInX)" "$(calc '2*d' d="$(v drawInX)")"
     checkBetween "square cup: the largest displacement since t = 0.05 (maxDisplacement since)" \
         "$(v movedSince)" 1e-6 100
+    # The effect report through the shells: the drawn flange flows
+    # plastically (shellSet::plasticDissipation; observed 0.76 of the
+    # internal work), friction dissipates (0.15 of the supplied work)
+    checkEffect "square cup: effect report" "$c" plasticity plasticDissipation matters
+    checkEffect "square cup: effect report" "$c" friction frictionDissipation matters
     # Restart from the written state in the middle of the stroke: the
     # rest of the run reproduces the continuous one (shell frames and
     # thickness, contact closest points, frames and multipliers, the
