@@ -21,31 +21,41 @@ struct umfpackLU
     public Eigen::UmfPackLU<sparseMatrix>
 {
     void* numeric() const { return m_numeric; }
+    double controlValue(int i) const { return m_control(i); }
     using Eigen::UmfPackLU<sparseMatrix>::info;
     double infoValue(int i) const { return m_umfpackInfo(i); }
 };
 
 struct umfpackSolver::impl
 {
-    //- The factorisation, and the other ordering's analysis while the
-    //  first factorisation compares them (else null)
+    //- An ordering and a strategy of UMFPACK
+    struct choice
+    {
+        int ordering = UMFPACK_ORDERING_AMD;
+        int strategy = UMFPACK_STRATEGY_AUTO;
+    };
+
+    //- The factorisation, and the other candidates' analyses while the
+    //  first factorisation compares them (else empty)
     std::unique_ptr<umfpackLU> lu = std::make_unique<umfpackLU>();
-    std::unique_ptr<umfpackLU> other;
+    std::vector<std::unique_ptr<umfpackLU>> others;
     // UMFPACK's solve reads the matrix again (iterative refinement), so the
     // factorised matrix is kept here rather than referenced
     sparseMatrix K;
     bool analysed = false;
     bool factorised = false;
-    //- The ordering a first factorisation chose (-1: none yet), and the
+    //- The choice of a first factorisation (valid: one was made), and the
     //  nonzeros of its matrix
-    int chosen = -1;
+    bool valid = false;
+    choice chosen;
     double chosenNonZeros = 0;
 
-    //- Symbolic analysis of K with an ordering into a new object
-    std::unique_ptr<umfpackLU> analyse(int ordering) const
+    //- Symbolic analysis of K with a choice into a new object
+    std::unique_ptr<umfpackLU> analyse(choice c) const
     {
         auto lu = std::make_unique<umfpackLU>();
-        lu->umfpackControl()(UMFPACK_ORDERING) = ordering;
+        lu->umfpackControl()(UMFPACK_ORDERING) = c.ordering;
+        lu->umfpackControl()(UMFPACK_STRATEGY) = c.strategy;
         lu->analyzePattern(K);
         if (lu->info() != Eigen::Success)
         {
@@ -58,9 +68,27 @@ struct umfpackSolver::impl
         return lu;
     }
 
-    bool metis(const umfpackLU& lu) const
+    static bool metis(const umfpackLU& lu)
     {
         return int(lu.infoValue(UMFPACK_ORDERING_USED)) == UMFPACK_ORDERING_METIS;
+    }
+
+    static bool symmetric(const umfpackLU& lu)
+    {
+        return
+            int(lu.infoValue(UMFPACK_STRATEGY_USED))
+         == UMFPACK_STRATEGY_SYMMETRIC;
+    }
+
+    //- The choice a factorisation was made with (the strategy as asked:
+    //  auto stays auto, so that it decides again for a later pattern)
+    choice choiceOf(const umfpackLU& lu) const
+    {
+        return
+        {
+            metis(lu) ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD,
+            int(lu.controlValue(UMFPACK_STRATEGY))
+        };
     }
 };
 
@@ -110,50 +138,75 @@ void form::umfpackSolver::analyzePattern(const sparseMatrix& K)
     {
         throw numericalError("umfpack: matrix is not square");
     }
+    using choice = impl::choice;
     impl& m = *impl_;
     m.K = K;
     m.K.makeCompressed();
     m.analysed = false;
     m.factorised = false;
-    m.other.reset();
-    if (hasDenseRowOrColumn(m.K) && ordering_ == ordering::automatic)
+    m.others.clear();
+    if (ordering_ == ordering::amd)
     {
-        m.lu = m.analyse(UMFPACK_ORDERING_AMD);
+        m.lu = m.analyse({UMFPACK_ORDERING_AMD, UMFPACK_STRATEGY_AUTO});
+    }
+    else if (ordering_ == ordering::metis)
+    {
+        m.lu = m.analyse({UMFPACK_ORDERING_METIS, UMFPACK_STRATEGY_AUTO});
+    }
+    else if (ordering_ == ordering::symmetricAmd)
+    {
+        m.lu = m.analyse({UMFPACK_ORDERING_AMD, UMFPACK_STRATEGY_SYMMETRIC});
+    }
+    else if (hasDenseRowOrColumn(m.K))
+    {
+        m.lu = m.analyse({UMFPACK_ORDERING_AMD, UMFPACK_STRATEGY_AUTO});
     }
     else if
     (
-        ordering_ != ordering::automatic
-     || (
-            m.chosen >= 0
-         && std::abs(m.K.nonZeros() - m.chosenNonZeros) <= 0.25*m.chosenNonZeros
-        )
+        m.valid
+     && std::abs(m.K.nonZeros() - m.chosenNonZeros) <= 0.25*m.chosenNonZeros
     )
     {
-        const int o =
-            ordering_ == ordering::metis ? UMFPACK_ORDERING_METIS
-          : ordering_ == ordering::amd ? UMFPACK_ORDERING_AMD
-          : m.chosen;
-        m.lu = m.analyse(o);
+        m.lu = m.analyse(m.chosen);
     }
     else
     {
-        // The first pattern, or one of another size: both orderings. The
-        // symbolic flop estimates decide if they differ by more than a
-        // factor 4 (the FSI matrix at rest: 32), else the first numeric
-        // factorisation
-        auto metis = m.analyse(UMFPACK_ORDERING_METIS);
-        auto amd = m.analyse(UMFPACK_ORDERING_AMD);
-        const double fm = metis->infoValue(UMFPACK_FLOPS_ESTIMATE);
-        const double fa = amd->infoValue(UMFPACK_FLOPS_ESTIMATE);
-        const bool amdFirst = fa < fm;
-        m.lu = std::move(amdFirst ? amd : metis);
-        if (std::max(fm, fa) <= 4*std::min(fm, fa))
+        // The first pattern, or one of another size
+        auto amd = m.analyse({UMFPACK_ORDERING_AMD, UMFPACK_STRATEGY_AUTO});
+        if (!impl::symmetric(*amd))
         {
-            m.other = std::move(amdFirst ? metis : amd);
+            // UMFPACK took the unsymmetric strategy (a pattern less than
+            // half symmetric: the ALE fluid's matrices). Its METIS orders
+            // K^T K (1.5-2 times AMD's flops there), but its symmetric
+            // strategy (AMD on K + K^T) is a candidate, and its flop
+            // estimate is no guide (50-100 times the count on the FSI
+            // matrices): the first numeric factorisation decides
+            m.lu = std::move(amd);
+            m.others.push_back
+            (
+                m.analyse({UMFPACK_ORDERING_AMD, UMFPACK_STRATEGY_SYMMETRIC})
+            );
         }
         else
         {
-            m.chosen = amdFirst ? UMFPACK_ORDERING_AMD : UMFPACK_ORDERING_METIS;
+            // Both orderings. The symbolic flop estimates decide if they
+            // differ by more than a factor 4 (the FSI matrix at rest:
+            // 32), else the first numeric factorisation
+            auto metis =
+                m.analyse({UMFPACK_ORDERING_METIS, UMFPACK_STRATEGY_AUTO});
+            const double fm = metis->infoValue(UMFPACK_FLOPS_ESTIMATE);
+            const double fa = amd->infoValue(UMFPACK_FLOPS_ESTIMATE);
+            const bool amdFirst = fa < fm;
+            m.lu = std::move(amdFirst ? amd : metis);
+            if (std::max(fm, fa) <= 4*std::min(fm, fa))
+            {
+                m.others.push_back(std::move(amdFirst ? metis : amd));
+            }
+        }
+        if (m.others.empty())
+        {
+            m.chosen = m.choiceOf(*m.lu);
+            m.valid = true;
             m.chosenNonZeros = m.K.nonZeros();
         }
     }
@@ -190,17 +243,29 @@ void form::umfpackSolver::factorize(const sparseMatrix& K)
         }
     };
     factor(*m.lu);
-    if (m.other)
+    if (!m.others.empty())
     {
-        // The first factorisation with the other ordering too: the one
-        // with fewer flops stays, for the later patterns as well
-        factor(*m.other);
-        if (m.other->infoValue(UMFPACK_FLOPS) < m.lu->infoValue(UMFPACK_FLOPS))
+        // The first factorisation with the other candidates too: the one
+        // with fewest flops stays, for the later patterns as well (a
+        // candidate that fails numerically drops out)
+        for (auto& other : m.others)
         {
-            std::swap(m.lu, m.other);
+            try
+            {
+                factor(*other);
+            }
+            catch (const numericalError&)
+            {
+                continue;
+            }
+            if (other->infoValue(UMFPACK_FLOPS) < m.lu->infoValue(UMFPACK_FLOPS))
+            {
+                std::swap(m.lu, other);
+            }
         }
-        m.other.reset();
-        m.chosen = m.metis(*m.lu) ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
+        m.others.clear();
+        m.chosen = m.choiceOf(*m.lu);
+        m.valid = true;
         m.chosenNonZeros = m.K.nonZeros();
     }
     m.factorised = true;
@@ -249,5 +314,11 @@ double form::umfpackSolver::factorMemory() const
 
 bool form::umfpackSolver::usedMetis() const
 {
-    return impl_->analysed && impl_->metis(*impl_->lu);
+    return impl_->analysed && impl::metis(*impl_->lu);
+}
+
+
+bool form::umfpackSolver::usedSymmetricStrategy() const
+{
+    return impl_->analysed && impl::symmetric(*impl_->lu);
 }
