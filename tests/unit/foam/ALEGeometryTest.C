@@ -20,6 +20,7 @@ Description
 #include "fluidTestMeshes.H"
 #include "../fdCheck.H"
 #include <gtest/gtest.h>
+#include <map>
 #include <random>
 
 using namespace form;
@@ -250,15 +251,33 @@ TEST(ALEGeometry, dualDerivativesAgreeWithCentralDifferences)
 }
 
 
+// The points as functions of variables, in one of three ways (the faces'
+// geometry and swept volumes in dense local derivatives over a face's
+// variables take dual<4>, dual<12> or sparse arithmetic by their count):
+enum class seeding
+{
+    coordinates,    // every coordinate a variable 3p + c: 12 per quadrilateral
+    planarUnits,    // the points of one (x, y) share 2 variables, z fixed:
+                    // 4 per face of a planar mesh (the ALE fluid's seeding)
+    shared          // 3p + c plus a variable per pair of points: 14-16 per
+                    // quadrilateral, more than dense local derivatives hold
+};
+
 TEST(ALEGeometry, sparseGradientsAreTheDualDerivatives)
 {
-    // Every point coordinate a variable (3p + c): the sparse gradients,
-    // contracted with a motion m, are the directional derivatives along m
-    // (dual<1>), for every quantity and the swept volumes
+    // The sparse gradients, contracted with a direction mv in the space of
+    // the variables, are the directional derivatives along mv (dual<1>),
+    // for every quantity and the swept volumes
     using D = form::dual<1>;
     using S = form::sparseDual;
     for (const std::string* mesh : {&skewedMesh, &wedgeAxisMesh})
+    for
+    (
+        const seeding how :
+        {seeding::coordinates, seeding::planarUnits, seeding::shared}
+    )
     {
+        SCOPED_TRACE("seeding " + std::to_string(int(how)));
         scratchCase c
         (
             geometryCase(*mesh),
@@ -267,18 +286,43 @@ TEST(ALEGeometry, sparseGradientsAreTheDualDerivatives)
         const Foam::fvMesh& fm = c.mesh();
         const Foam::pointField x0(fm.points());
         const Foam::pointField x1(x0 + randomMotion(fm, 0.05, 21));
-        const Foam::vectorField m(randomMotion(fm, 1, 22));
+        std::mt19937 gen(22);
+        std::uniform_real_distribution<double> uni(-1, 1);
+        std::vector<double> mv(4*x1.size());
+        for (double& v : mv) v = uni(gen);
+        // planar units: the points of one in-plane position
+        std::map<std::pair<long, long>, int> unitOf;
         std::vector<Foam::dualVector<D>> xd(x1.size());
         std::vector<Foam::dualVector<S>> xs(x1.size());
         forAll(x1, p)
         {
+            const std::pair<long, long> key
+            (
+                std::lround(1e9*x0[p].x()), std::lround(1e9*x0[p].y())
+            );
+            const int u = unitOf.emplace(key, int(unitOf.size())).first->second;
             for (Foam::direction k = 0; k < 3; ++k)
             {
-                D v(x1[p][k]);
-                v.d[0] = m[p][k];
-                (k == 0 ? xd[p].x : k == 1 ? xd[p].y : xd[p].z) = v;
-                (k == 0 ? xs[p].x : k == 1 ? xs[p].y : xs[p].z) =
-                    S::variable(x1[p][k], 3*p + k);
+                S v(x1[p][k]);
+                if (how == seeding::coordinates)
+                {
+                    v.add(3*p + k, 1);
+                }
+                else if (how == seeding::planarUnits)
+                {
+                    if (k < 2) v.add(2*u + k, 1);
+                }
+                else
+                {
+                    v.add(3*p + k, 1).add(3*x1.size() + p/2, 0.5 + k);
+                }
+                D w(v.v);
+                for (int j = 0; j < v.size(); ++j)
+                {
+                    w.d[0] += v.derivative(j)*mv[v.index(j)];
+                }
+                (k == 0 ? xd[p].x : k == 1 ? xd[p].y : xd[p].z) = w;
+                (k == 0 ? xs[p].x : k == 1 ? xs[p].y : xs[p].z) = v;
             }
         }
         Foam::ALEGeometry<D> gd;
@@ -291,7 +335,7 @@ TEST(ALEGeometry, sparseGradientsAreTheDualDerivatives)
             double v = 0;
             for (int j = 0; j < a.size(); ++j)
             {
-                v += a.derivative(j)*m[a.index(j)/3][a.index(j) % 3];
+                v += a.derivative(j)*mv[a.index(j)];
             }
             worst = std::max(worst, std::abs(a.v - b.v)/(1 + std::abs(b.v)));
             worst = std::max(worst, std::abs(v - b.d[0])/(1 + std::abs(b.d[0])));
