@@ -15,7 +15,8 @@
 # oscillation with the Bathe scheme); friction work of a block sliding
 # under a push; the effect report (inertia matters in the impact, friction
 # dissipates mu N/P of the push's work, a restart continues the report);
-# bad input.
+# the summary's oscillation statistics (mean, amplitude, frequency of the
+# tip over a window of four periods); bad input.
 . "$(dirname "$0")/testFunctions"
 
 newCase()
@@ -77,6 +78,54 @@ if run "$trap"; then
         "$(summary "$trap" newtonIterationsPerStep)" 1 1e-12
 else
     reportFailure "trapezoidal run" "$trap"
+fi
+
+# 1b. The oscillation statistics of the summary (mean, amplitude,
+#     frequency over a window, as Turek & Hron define them): the tip of the
+#     undamped bar swings between 0 and 2 u_s with the period 4 L/c = 40,
+#     the fundamental of the fixed-free bar; over the window (40 200) four
+#     periods, three whole ones between the upward crossings of the mean.
+#     Mean u_s, amplitude u_s (the discrete wave's rounded front lowers the
+#     peaks: 3 %), frequency c/(4 L) = 0.025 (the trapezoidal rule's
+#     period error (omega dt)^2/12 is 1e-4)
+osc=$(newCase dynamicBar)
+sed -i 's/^endTime .*/endTime         200;/' "$osc/system/controlDict"
+sed -i 's|^\( *wallForceMin .*\)$|\1\n    tipMean { type displacement; point (10 0.5 0); component x; statistic mean; window (40 200); }\n    tipAmplitude { type displacement; point (10 0.5 0); component x; statistic amplitude; window (40 200); }\n    tipFrequency { type displacement; point (10 0.5 0); component x; statistic frequency; window (40 200); }|' "$osc/system/solidSolution"
+if run "$osc"; then
+    checkClose "oscillation: tip mean over (40 200) = u_s" "$(summary "$osc" tipMean)" "$us" 0.01
+    checkClose "oscillation: tip amplitude over (40 200) = u_s" "$(summary "$osc" tipAmplitude)" "$us" 0.04
+    checkClose "oscillation: tip frequency over (40 200) = c/(4 L)" "$(summary "$osc" tipFrequency)" 0.025 0.005
+    if grep -q "tipFrequency = .* (frequency over t = 40 to 200: 641 steps, 3 whole periods)" "$osc/log.formFoam"; then
+        pass "oscillation: the log states the window, its steps and whole periods"
+    else
+        fail "oscillation: the window's line missing in $osc/log.formFoam"
+    fi
+    # A restart at t = 100, inside the window: the samples before it come
+    # back from postProcessing/history.dat, the statistics are the
+    # continuous run's
+    r=$(newCase dynamicBar)
+    rm -rf "$r"
+    cp -r "$osc" "$r"
+    for t in "$r"/1[1-9]0 "$r"/200; do rm -rf "$t"; done
+    sed -i "s/^startTime .*/startTime       100;/" "$r/system/controlDict"
+    if (cd "$r" && formFoam > log.restart 2>&1) \
+        && grep -q "Restarting from the state written at time 100" "$r/log.restart"
+    then
+        for q in tipMean tipAmplitude tipFrequency; do
+            checkClose "oscillation: restart at t = 100, $q vs continuous run" \
+                "$(summary "$r" $q)" "$(summary "$osc" $q)" 1e-10
+        done
+        if grep -q "tipFrequency = .* (frequency over t = 40 to 200: 641 steps, 3 whole periods)" "$r/log.restart"; then
+            pass "oscillation: restart at t = 100, the window holds all its 641 steps"
+        else
+            fail "oscillation: restart at t = 100, the window's steps (see $r/log.restart)"
+        fi
+    else
+        fail "oscillation: restart at t = 100 (see $r/log.restart)"
+    fi
+    rm -rf "$r"
+else
+    reportFailure "oscillation run" "$osc"
 fi
 
 #------------------------------------------------------------------------------
@@ -392,6 +441,14 @@ cp "$bad/solidProperties.orig" "$bad/constant/bar/solidProperties"
 
 setEntry "$bad" analysis static
 badRun; expectFailure "integrator given to a static analysis" $? "$bad/log.formFoam" "Entry 'integrator' in .*solidSolution.? needs analysis dynamic"
+cp "$bad/solidSolution.orig" "$bad/system/solidSolution"
+
+sed -i 's|^\( *wallForceMin .*\)$|\1\n    tipFrequency { type displacement; point (10 0.5 0); component x; statistic frequency; }|' "$bad/system/solidSolution"
+badRun; expectFailure "frequency without a window" $? "$bad/log.formFoam" "Entry 'window' in .*tipFrequency.*need a time window"
+cp "$bad/solidSolution.orig" "$bad/system/solidSolution"
+
+sed -i 's|^\( *wallForceMin .*\)$|\1\n    tipMean { type displacement; point (10 0.5 0); component x; statistic mean; window (30 50); }|' "$bad/system/solidSolution"
+badRun; expectFailure "a window beyond endTime" $? "$bad/log.formFoam" "Entry 'window' of summary entry 'tipMean' .* out of range: \(30 50\)"
 cp "$bad/solidSolution.orig" "$bad/system/solidSolution"
 
 setEntry "$bad" mass diagonal

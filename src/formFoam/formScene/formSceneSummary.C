@@ -331,6 +331,16 @@ void Foam::formScene::updateEntry
         }
         return;
     }
+    if (e.window)
+    {
+        e.window->add(time, v);
+        e.set = e.window->hasSamples();
+        e.value =
+            e.statistic == "mean" ? e.window->mean()
+          : e.statistic == "amplitude" ? e.window->amplitude()
+          : e.window->frequency();
+        return;
+    }
     if
     (
         !e.set || e.statistic == "final"
@@ -499,6 +509,14 @@ void Foam::formScene::writeSummary
                     << summary_[e.atEntry].curValue << ")"
                     << exit(FatalIOError);
             }
+            if (!e.set && e.window)
+            {
+                FatalIOErrorInFunction(e.dict)
+                    << "summary entry '" << e.name << "' in " << e.dict.name()
+                    << " was never evaluated: no converged step in its window ("
+                    << e.window->windowStart() << ' ' << e.window->windowEnd()
+                    << ")" << exit(FatalIOError);
+            }
             if (!e.set)
             {
                 FatalIOErrorInFunction(e.dict)
@@ -507,7 +525,23 @@ void Foam::formScene::writeSummary
                     << " time " << e.time << exit(FatalIOError);
             }
             os.writeEntry(e.name, e.value);
-            Info<< "    " << e.name << " = " << e.value << nl;
+            Info<< "    " << e.name << " = " << e.value;
+            if (e.window)
+            {
+                Info<< " (" << e.statistic << " over t = "
+                    << e.window->windowStart() << " to "
+                    << e.window->windowEnd() << ": " << e.window->samples()
+                    << " steps, " << e.window->periods() << " whole periods)";
+            }
+            Info<< nl;
+            if (e.window && e.statistic == "frequency" && !e.window->hasFrequency())
+            {
+                WarningInFunction
+                    << "summary entry '" << e.name << "': no whole period in"
+                    << " its window (" << e.window->windowStart() << ' '
+                    << e.window->windowEnd() << "): fewer than two upward"
+                    << " crossings of the mean; frequency 0 reported" << nl;
+            }
         }
         const bool solid = solids_.size();
         os.writeEntry

@@ -24,7 +24,10 @@ void Foam::formScene::readSummary()
         se.dict = dictOf(e, sd, "{ type ...; }");
         const dictionary& ed = se.dict;
         const word type = ed.get<word>("type");
-        const wordList common{"type", "scale", "statistic", "time", "at"};
+        const wordList common
+        {
+            "type", "scale", "statistic", "time", "at", "window"
+        };
         wordList keys(common);
         if (type == "displacement" || type == "position")
         {
@@ -290,12 +293,46 @@ void Foam::formScene::readSummary()
                 << exit(FatalIOError);
         }
         se.statistic = ed.getOrDefault<word>("statistic", "final");
-        if (!wordList{"final", "max", "min"}.found(se.statistic))
+        const wordList windowed{"mean", "amplitude", "frequency"};
+        if
+        (
+            !wordList{"final", "max", "min"}.found(se.statistic)
+         && !windowed.found(se.statistic)
+        )
         {
             FatalIOErrorInFunction(ed)
                 << "Entry 'statistic' in " << ed.name() << ": unknown '"
-                << se.statistic << "'; valid: final max min"
-                << exit(FatalIOError);
+                << se.statistic << "'; valid: final max min mean amplitude"
+                << " frequency" << exit(FatalIOError);
+        }
+        if (windowed.found(se.statistic) != ed.found("window"))
+        {
+            FatalIOErrorInFunction(ed)
+                << "Entry 'window' in " << ed.name() << ": the statistics"
+                << " mean, amplitude and frequency need a time window, e.g."
+                << " window (8 10); (the others take none); statistic '"
+                << se.statistic << "'" << exit(FatalIOError);
+        }
+        if (ed.found("window"))
+        {
+            const FixedList<scalar, 2> w(ed.get<FixedList<scalar, 2>>("window"));
+            if (!(0 <= w[0] && w[0] < w[1] && w[1] <= steps_.endTime))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'window' of summary entry '" << se.name
+                    << "' in " << ed.name() << " is out of range: (" << w[0]
+                    << ' ' << w[1] << ") (valid: two times of the run,"
+                    << " 0 <= start < end <= endTime " << steps_.endTime
+                    << ")" << exit(FatalIOError);
+            }
+            if (ed.found("time") || ed.found("at"))
+            {
+                FatalIOErrorInFunction(ed)
+                    << "Entry 'window' in " << ed.name() << ": a statistic"
+                    << " over a window takes neither 'time' nor 'at'"
+                    << exit(FatalIOError);
+            }
+            se.window = std::make_shared<form::oscillation>(w[0], w[1]);
         }
         se.scale = ed.getOrDefault<scalar>("scale", 1);
         se.atTime = ed.found("time");
