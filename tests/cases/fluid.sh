@@ -7,6 +7,8 @@
 #     second order in the mesh; the Newton matrix against finite
 #     differences (formFoam -checkTangent) and Newton's order, for linear
 #     and upwind convection;
+#   - a time-dependent inlet (OpenFOAM's uniformFixedValue: Turek & Hron's
+#     cosine ramp times the parabola): the inflow at every step's time;
 #   - Hagen-Poiseuille flow in a pipe (wedge mesh): profile and flow rate
 #     pi R^4 dp/(8 mu L), second order;
 #   - radial outflow u_r = c/r (wedge mesh): the hoop terms p/r and
@@ -62,6 +64,32 @@ checkBelow "channel: profile error second order [2 - log2(e10/e20) < 0.2]" \
     "$(orderShortfall 2 "$e1" "$e2")" 0.2
 g=$(calc '(a - b)/4' a="$(summaryValue "$work/ch2" pressureAt4)" b="$(summaryValue "$work/ch2" pressureAt8)")
 checkClose "channel: developed pressure gradient vs 12 mu U/h^2 = 1.2" "$g" 1.2 0.01
+
+#- A time-dependent inlet through OpenFOAM's own conditions: the parabolic
+#  profile u = 6 U y (h - y)/h^2 (mean U = 1, h = 1) ramped by Turek &
+#  Hron's 0.5 (1 - cos(pi t/2)) for t < 2 (uniformFixedValue: a scale
+#  Function1 of time with halfCosineRamp, the parabola as scale2 of y; the
+#  unsteady FSI benchmarks' inflow), transient (Euler): every step takes
+#  the inlet at its own time, so the inflow at t is the ramp times the
+#  full one (the inlet's midpoint sum of the parabola: 1 + h_y^2/2)
+FORMFOAM_ARGS= runFluid poiseuilleChannel "$work/ramp" \
+    "sed -i 's/^ddtSchemes .*/ddtSchemes      { default Euler; }/' system/water/fvSchemes" \
+    "sed -i 's/^endTime .*/endTime         3;/; s/^deltaT .*/deltaT          0.25;/' system/controlDict" \
+    "sed -i 's/^\\( *centreVelocity .*\\)\$/\\1\\n    inflowAt05 { type fluidFlowRate; patch inlet; time 0.5; }\\n    inflowAt1 { type fluidFlowRate; patch inlet; time 1; }\\n    inflowAt3 { type fluidFlowRate; patch inlet; time 3; }/' system/solidSolution" \
+    "python3 -c \"import re; p='0/water/U'; s=open(p).read(); s=re.sub(r'    inlet\\n    \\{[^}]*\\}', open('$here/rampedInlet').read().rstrip(), s); open(p,'w').write(s)\""
+if grep -q '^End' "$work/ramp/log.formFoam"; then
+    pass "ramped inlet: ran (12 transient steps)"
+    q3=$(summaryValue "$work/ramp" inflowAt3)
+    checkClose "ramped inlet: full inflow at t = 3 (midpoint sum of the parabola over 10 faces: -1.005)" \
+        "$q3" -1.005 1e-9
+    checkClose "ramped inlet: inflow at t = 0.5 / full = 0.5 (1 - cos(pi/4))" \
+        "$(calc 'a/b' a="$(summaryValue "$work/ramp" inflowAt05)" b="$q3")" \
+        "$(calc '0.5*(1 - cos(atan2(0, -1)/4))')" 1e-9
+    checkClose "ramped inlet: inflow at t = 1 / full = 0.5" \
+        "$(calc 'a/b' a="$(summaryValue "$work/ramp" inflowAt1)" b="$q3")" 0.5 1e-9
+else
+    fail "ramped inlet: formFoam failed"; tail -20 "$work/ramp/log.formFoam"
+fi
 
 #- Upwind convection: not differentiable where a face flux changes sign
 #  (v = 0 in a developed channel), so the channel converges, more slowly;
