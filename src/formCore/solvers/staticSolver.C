@@ -49,6 +49,9 @@ constexpr double heldLoadTolerance = 1e-12;
 // square root would accept 3e-2 of the force level.
 constexpr double roundOffForceFloor = 1e-4;
 constexpr double roundOffEnergyFloor = 1e-7;
+// An update this small against the state (|dU| <= floor |U|: ~5000 eps)
+// changes nothing a double can hold
+constexpr double roundOffUpdateFloor = 1e-12;
 
 } // namespace
 
@@ -646,10 +649,28 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
          && rNorm > 0.5*rPrevNorm
          && takenRatio
          <= std::min(std::sqrt(newton_.energyTolerance), roundOffEnergyFloor);
+        // The same floor seen in the update itself: the force criterion
+        // holds tenfold, |r| no longer decreases, and the update is
+        // round-off of the state. Free of the energy reference, which a
+        // predicted increment that does almost no work makes meaningless
+        // (a strip drawn rigidly: its energy ratios of 1e23 at the first
+        // iterations, and a floor that depends on the BLAS kernels'
+        // rounding)
+        const bool updateRoundOff =
+            !converged && !roundOff && !energyRoundOff
+         && i > 1
+         && rNorm <= 0.1*newton_.forceTolerance*ref
+         && rNorm > 0.5*rPrevNorm
+         && dUNorm <= roundOffUpdateFloor*model_.U().norm();
         if (roundOff)
         {
             log_<< "    force residual at round-off level (energy converged,"
                    " |r| stagnates): accepted\n";
+        }
+        if (updateRoundOff)
+        {
+            log_<< "    update at round-off level of the state (force"
+                   " converged tenfold, |r| stagnates): accepted\n";
         }
         if (energyRoundOff)
         {
@@ -673,7 +694,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
         // whose predicted increment does no work) makes round-off
         // updates look large against it
         const bool forceStalled =
-            !converged && !roundOff && !energyRoundOff
+            !converged && !roundOff && !energyRoundOff && !updateRoundOff
          && i > 1
          && newton_.lineSearch
          && beta <= std::pow(0.5, newton_.maxLineSearchIterations)
@@ -696,7 +717,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             );
             log_<< line;
         }
-        if (converged || roundOff || energyRoundOff || stalled)
+        if (converged || roundOff || energyRoundOff || updateRoundOff || stalled)
         {
             model_.setForceLevel(ref);
             return true;
