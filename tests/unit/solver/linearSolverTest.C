@@ -39,6 +39,23 @@ sparseMatrix gridMatrix(int n, double shift, double c)
     return K;
 }
 
+// K's entries appended to t, shifted by offset along the diagonal
+void appendTriplets
+(
+    std::vector<Eigen::Triplet<double>>& t,
+    const sparseMatrix& K,
+    int offset = 0
+)
+{
+    for (int k = 0; k < K.outerSize(); ++k)
+    {
+        for (sparseMatrix::InnerIterator it(K, k); it; ++it)
+        {
+            t.emplace_back(offset + it.row(), offset + it.col(), it.value());
+        }
+    }
+}
+
 vecX denseSolve(const sparseMatrix& K, const vecX& r)
 {
     return matX(K).fullPivLu().solve(r);
@@ -239,13 +256,7 @@ TEST(linearSolver, UmfpackKeepsTheCheaperOrdering)
         {
             // couple every node to its neighbours two layers away
             std::vector<Eigen::Triplet<double>> t;
-            for (int k = 0; k < K.outerSize(); ++k)
-            {
-                for (sparseMatrix::InnerIterator it(K, k); it; ++it)
-                {
-                    t.emplace_back(it.row(), it.col(), it.value());
-                }
-            }
+            appendTriplets(t, K);
             const int n = 40;
             for (int i = 0; i < n; ++i)
             {
@@ -316,17 +327,7 @@ TEST(linearSolver, UmfpackTriesTheSymmetricStrategy)
     const int n = 40, N = 3*n*n;
     const sparseMatrix G = gridMatrix(n, 0.01, 0.3);
     std::vector<Eigen::Triplet<double>> t;
-    for (int k = 0; k < G.outerSize(); ++k)
-    {
-        for (sparseMatrix::InnerIterator it(G, k); it; ++it)
-        {
-            t.emplace_back(it.row(), it.col(), it.value());
-            for (int c = 1; c <= 2; ++c)
-            {
-                t.emplace_back(c*n*n + it.row(), c*n*n + it.col(), it.value());
-            }
-        }
-    }
+    for (int c = 0; c <= 2; ++c) appendTriplets(t, G, c*n*n);
     for (int i = 0; i < n; ++i)
     {
         for (int j = 0; j < n; ++j)
@@ -400,13 +401,7 @@ TEST(linearSolver, UmfpackDenseBorderUsesAMD)
     const int n = 20, m = 6, N = n*n + m;
     const sparseMatrix G = gridMatrix(n, 0.01, 0.3);
     std::vector<Eigen::Triplet<double>> t;
-    for (int k = 0; k < G.outerSize(); ++k)
-    {
-        for (sparseMatrix::InnerIterator it(G, k); it; ++it)
-        {
-            t.emplace_back(it.row(), it.col(), it.value());
-        }
-    }
+    appendTriplets(t, G);
     for (int b = 0; b < m; ++b)
     {
         const int c = n*n + b;
