@@ -162,6 +162,12 @@ bool solidModel::velocityLaw(double& beta, const vecX*& c) const
 }
 
 
+double solidModel::accelerationCoefficient() const
+{
+    return impl_->inertia ? impl_->alpha : 0;
+}
+
+
 vecX solidModel::acceleration() const
 {
     const impl& m = *impl_;

@@ -5,17 +5,15 @@ Description
     One load step by full Newton-Raphson with line search (see
     staticSolver.H; Bathe, Finite Element Procedures, 2nd ed., sec. 8.4):
     the predictor, the start-state tests, the iteration and its
-    convergence criteria, the linear solves. The time loop and cutback:
-    staticSolverRun.C; the line searches: staticSolverLineSearch.C.
+    convergence criteria. The time loop and cutback: staticSolverRun.C;
+    the line searches: staticSolverLineSearch.C; the evaluations, linear
+    solves and kept tangents: staticSolverLinear.C.
 \*---------------------------------------------------------------------------*/
 #include "staticSolver.H"
 #include "formError.H"
-#include "wallClock.H"
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <ostream>
 
 namespace form
@@ -54,102 +52,6 @@ constexpr double roundOffEnergyFloor = 1e-7;
 constexpr double roundOffUpdateFloor = 1e-12;
 
 } // namespace
-
-
-bool staticSolver::evaluate(double t, vecX& r, bool wantTangent)
-{
-    try
-    {
-        return model_.evaluate(t, r, wantTangent);
-    }
-    catch (const inversionError& e)
-    {
-        lastFailure_ = e.what();
-        return false;
-    }
-}
-
-
-vecX staticSolver::solveLinear(const vecX& rhs)
-{
-    phaseTimes& times = model_.times();
-    auto start = std::chrono::steady_clock::now();
-    if
-    (
-        !patternAnalysed_
-     || analysedRevision_ != model_.patternRevision()
-    )
-    {
-        solver_.analyzePattern(model_.K());
-        patternAnalysed_ = true;
-        analysedRevision_ = model_.patternRevision();
-    }
-    ++times.factorisations;
-    model_.tangentFactorised();
-    try
-    {
-        solver_.factorize(model_.K());
-    }
-    catch (...)
-    {
-        times.factorisation += secondsSince(start);
-        throw;
-    }
-    times.factorisation += secondsSince(start);
-    const linearSolver::factorStats st = solver_.stats();
-    times.factorFlops += st.flops;
-    times.factorNonzeros = st.nonzeros;
-
-    start = std::chrono::steady_clock::now();
-    vecX dU = solver_.solve(rhs);
-    times.solve += secondsSince(start);
-    if (!dU.allFinite())
-    {
-        throw stepFailure("linear solve returned non-finite values");
-    }
-    return dU;
-}
-
-
-vecX staticSolver::solveAgain(const vecX& rhs)
-{
-    const auto start = std::chrono::steady_clock::now();
-    vecX dU = solver_.solve(rhs);
-    model_.times().solve += secondsSince(start);
-    if (!dU.allFinite())
-    {
-        throw stepFailure("linear solve returned non-finite values");
-    }
-    return dU;
-}
-
-
-bool staticSolver::solveIncrement(double t0, double t1, stepReport& report)
-{
-    checkSolver();
-    report.time = t1;
-    report.deltaT = t1 - t0;
-    report.iterations = 0;
-    report.residualNorms.clear();
-    report.updateNorms.clear();
-    report.energyNorms.clear();
-    lastFailure_.clear();
-    lastResidual_ = std::numeric_limits<double>::quiet_NaN();
-    try
-    {
-        return newton(t0, t1, report);
-    }
-    catch (const inputError&)
-    {
-        throw;
-    }
-    catch (const numericalError& e)
-    {
-        lastFailure_ = e.what();
-        log_<< "    failed: " << lastFailure_ << '\n';
-        return false;
-    }
-}
 
 
 bool staticSolver::newton(double t0, double t1, stepReport& report)
@@ -359,6 +261,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     // iteration (the bulge's pressure control at forceTolerance 1e-3 fell
     // behind its load step after step).
     vecX firstUpdate;
+    bool firstKept = false;
     if (nFree > 0 && r0 <= newton_.forceTolerance*level())
     {
         // r0 is linearised in the prescribed increment: evaluate at the
@@ -377,7 +280,7 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             if (predicted)
             {
                 predictedEnergy = predictedWork();
-                firstUpdate = solveLinear(r);
+                firstUpdate = newtonUpdate(t1, r, firstKept);
                 const double e = std::abs(firstUpdate.dot(r));
                 energyRatio = predictedEnergy > 0 ? e/predictedEnergy : 1;
                 accept =
@@ -457,8 +360,10 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
     {
         // (the first update may be computed already: the start state's
         // energy test above)
+        bool kept = firstKept;
         const vecX dU =
-            i == 1 && firstUpdate.size() > 0 ? firstUpdate : solveLinear(rhs);
+            i == 1 && firstUpdate.size() > 0
+          ? firstUpdate : newtonUpdate(t1, rhs, kept);
         if (newton_.checkTangent)
         {
             const tangentCheckResult c = checkTangentAlong(model_, t1, dU);
@@ -581,7 +486,8 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             "  beta %.3g",
             i, rNorm, rRel, dUNorm, energyRatio, beta
         );
-        log_<< line << model_.iterationNote(r) << '\n';
+        log_<< line << (kept ? "  kept" : "") << model_.iterationNote(r)
+            << '\n';
 
         if (!std::isfinite(rNorm))
         {
@@ -736,6 +642,17 @@ bool staticSolver::newton(double t0, double t1, stepReport& report)
             ++limit;
             log_<< "    converging quadratically at the iteration limit:"
                    " one more iteration\n";
+        }
+        // Kept factors that no longer contract the residual fast enough,
+        // or whose step the line search shortened: a new tangent for the
+        // next update (header)
+        if
+        (
+            kept
+         && (beta < 1 || rNorm > newton_.keptTangentContraction*rPrevNorm)
+        )
+        {
+            refreshTangent_ = true;
         }
         rPrevNorm = rNorm;
         if (rNorm > newton_.divergenceFactor*startRef)

@@ -151,8 +151,13 @@ void staticSolver::run
                 const vecX before =
                     newton_.extrapolate ? model_.state() : vecX();
                 stepReport stageReport;
+                // (kept tangents: the factors of this stage)
+                slot_ = newton_.keepTangent ? stage : 0;
+                if (slot_ >= int(slots_.size())) slots_.resize(slot_ + 1);
                 ok = solveIncrement(ts0, ts1, stageReport);
+                slot_ = 0;
                 report.iterations += stageReport.iterations;
+                report.newTangents += stageReport.newTangents;
                 for (std::size_t k = 0; k < stageReport.residualNorms.size(); ++k)
                 {
                     report.residualNorms.push_back
@@ -183,8 +188,12 @@ void staticSolver::run
                 std::snprintf
                 (
                     line, sizeof(line),
-                    "  converged in %d iterations, |r| = %.3e\n",
-                    report.iterations, report.residualNorms.back()
+                    "  converged in %d iterations, |r| = %.3e%s\n",
+                    report.iterations, report.residualNorms.back(),
+                    newton_.keepTangent
+                  ? (", new tangents " + std::to_string(report.newTangents))
+                    .c_str()
+                  : ""
                 );
                 log_<< line;
                 t = t1;

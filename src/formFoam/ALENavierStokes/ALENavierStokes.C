@@ -121,12 +121,14 @@ Foam::ALENavierStokes::ALENavierStokes
         const word ddt(mesh_.ddtScheme("ddt(U)"));
         if (ddt == "steadyState") steady_ = true;
         else if (ddt == "Euler") steady_ = false;
+        else if (ddt == "backward") steady_ = false, backward_ = true;
         else
         {
             FatalIOErrorInFunction(mesh_.schemesDict())
                 << "ddtSchemes in system/" << mesh_.name() << "/fvSchemes: '"
                 << ddt << "' is not available for the ALE fluid; use Euler"
-                << " (transient) or steadyState" << exit(FatalIOError);
+                << " or backward (transient) or steadyState"
+                << exit(FatalIOError);
         }
         const wordList w = schemeWords(mesh_.divScheme("div(phi,U)"));
         if (w.size() != 2 || w[0] != "Gauss" || (w[1] != "linear" && w[1] != "upwind"))
@@ -170,6 +172,7 @@ Foam::ALENavierStokes::ALENavierStokes
     points0_ = mesh_.points();
     V0_ = mesh_.V();
     Vstart_ = mesh_.V();
+    swept0_.setSize(mesh_.nFaces(), 0);
     points00_ = pointIOField
     (
         IOobject
@@ -186,6 +189,7 @@ Foam::ALENavierStokes::ALENavierStokes
     rAV_.setSize(nC, 0);
     Fm_.setSize(mesh_.nFaces(), 0);
     updateBoundaryValues();
+    readBackwardHistory();
 }
 
 
@@ -377,15 +381,14 @@ void Foam::ALENavierStokes::computeMeshFluxes()
     const pointField& pts = mesh_.points();
     forAll(faces, f)
     {
-        Fm_[f] = faces[f].sweptVol(points0_, pts)/dt_;
+        Fm_[f] = meshFlux(f, faces[f].sweptVol(points0_, pts));
     }
 }
 
 
 void Foam::ALENavierStokes::updateBoundaryValues()
 {
-    U_.correctBoundaryConditions();
-    p_.correctBoundaryConditions();
+    correctBoundaries();
     forAll(mesh_.boundary(), patchi)
     {
         uFixed_[patchi] = U_.boundaryField()[patchi];
@@ -454,7 +457,7 @@ void Foam::ALENavierStokes::computeRhieChowCoefficients()
     }
     forAll(a, c)
     {
-        if (!steady_) a[c] += rho*V[c]/dt_;
+        if (!steady_) a[c] += a0_*rho*V[c]/dt_;
         rAV_[c] = V[c]/max(a[c], VSMALL);
     }
 }
@@ -528,10 +531,24 @@ void Foam::ALENavierStokes::beginIncrement
 {
     t0_ = t0;
     t1_ = t1;
+    stepBegun_ = true;
     scaleStart_ = -1;
     // The fluid's time step in seconds (timeScale: seconds per unit of
     // the case's time in a quasi-static run)
     dt_ = (t1 - t0)*set_.timeScale;
+    // The backward difference on the last two levels (Euler at the first
+    // step); variable steps: Hairer, Norsett & Wanner, Solving ODEs I,
+    // sec. III.5 (BDF2 with step ratio w)
+    a0_ = 1;
+    a1_ = -1;
+    a2_ = 0;
+    if (backward_ && history_)
+    {
+        const scalar w = dt_/dt0_;
+        a0_ = (1 + 2*w)/(1 + w);
+        a1_ = -(1 + w);
+        a2_ = w*w/(1 + w);
+    }
     // Boundary values at t1 (time functions of the fields' conditions)
     const label index = runTime_.timeIndex();
     runTime_.setTime(t1, index);
@@ -573,6 +590,20 @@ void Foam::ALENavierStokes::evaluate
 
 void Foam::ALENavierStokes::commit(const form::vecX&)
 {
+    if (backward_ && stepBegun_)
+    {
+        // The committed level becomes the one before it
+        x00_ = x0_.head(nCellUnknowns());
+        V00_ = V0_;
+        const faceList& faces = mesh_.faces();
+        forAll(faces, f)
+        {
+            swept0_[f] = faces[f].sweptVol(points0_, mesh_.points());
+        }
+        dt0_ = dt_;
+        history_ = true;
+    }
+    stepBegun_ = false;
     x0_ = x_;
     points0_ = mesh_.points();
     V0_ = mesh_.V();

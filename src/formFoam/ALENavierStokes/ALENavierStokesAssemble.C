@@ -374,8 +374,8 @@ void Foam::ALENavierStokes::assembleMatrix
     const scalar rdt = 1/dt_;
     for (label P = 0; P < nC; ++P)
     {
-        if (!steady_) jMu(P, P, rho*V[P]*rdt*tensor(I));
-        jCp(P, P, m(p[P])*rK*V[P]*rdt);
+        if (!steady_) jMu(P, P, a0_*rho*V[P]*rdt*tensor(I));
+        jCp(P, P, a0_*m(p[P])*rK*V[P]*rdt);
     }
 }
 

@@ -128,7 +128,12 @@ std::string Foam::ALENavierStokes::describe() const
         << set_.rho << ", mu " << set_.mu << ", ";
     if (set_.incompressible) os << "incompressible";
     else os << "bulk modulus " << set_.bulkModulus;
-    os  << '\n' << (steady_ ? "steady" : "transient (Euler)")
+    os  << '\n'
+        << (
+               steady_ ? "steady"
+             : backward_ ? "transient (backward: BDF2, Euler at the first step)"
+             : "transient (Euler)"
+           )
         << ", convection " << (upwind_ ? "upwind" : "linear")
         << ", viscous flux " << (corrected_ ? "corrected" : "uncorrected")
         << ", Rhie-Chow pressure-velocity coupling, mesh motion "
@@ -212,7 +217,38 @@ void Foam::ALENavierStokes::updateFields()
         U_[c] = cellU(x_, c);
         p_[c] = x_(ip(c));
     }
-    U_.correctBoundaryConditions();
+    correctBoundaries();
+}
+
+
+void Foam::ALENavierStokes::correctBoundaries()
+{
+    // OpenFOAM's own conditions, except on the interface with a solid: its
+    // movingWallVelocity evaluates the mesh flux through the case's ddt
+    // scheme, whose backward variant needs old-time volumes that the fvMesh
+    // does not keep here (the mesh moves within one time index). The
+    // interface moves with the solid: its faces' velocities at the last
+    // evaluation (zero before the first)
+    const label nI = mesh_.nInternalFaces();
+    auto& Ub = U_.boundaryFieldRef();
+    forAll(Ub, patchi)
+    {
+        if (uBC_.size() == 0 || uBC_[patchi] != velocityBC::interface)
+        {
+            Ub[patchi].initEvaluate();
+            Ub[patchi].evaluate();
+            continue;
+        }
+        const label start = mesh_.boundary()[patchi].start() - nI;
+        vectorField v(Ub[patchi].size(), Zero);
+        forAll(v, i)
+        {
+            const label j =
+                interfaceFace_.size() ? interfaceFace_[start + i] : -1;
+            if (j >= 0 && j < uInterface_.size()) v[i] = uInterface_[j];
+        }
+        Ub[patchi] == v;
+    }
     p_.correctBoundaryConditions();
 }
 
@@ -231,6 +267,28 @@ bool Foam::ALENavierStokes::write(const word& timeName)
     ok = p_.write() && ok;
     U_.instance() = Uinstance;
     p_.instance() = pinstance;
+    // The backward scheme's level before this one: a restart continues
+    // with the same second-order step as the uninterrupted run
+    if (backward_ && history_)
+    {
+        const label n = nCellUnknowns();
+        scalarField h(1 + n + V00_.size() + swept0_.size());
+        label k = 0;
+        h[k++] = dt0_;
+        for (label i = 0; i < n; ++i) h[k++] = x00_(i);
+        forAll(V00_, i) h[k++] = V00_[i];
+        forAll(swept0_, i) h[k++] = swept0_[i];
+        IOField<scalar> f
+        (
+            IOobject
+            (
+                "backwardHistory", timeName, mesh_,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            ),
+            h
+        );
+        ok = f.write() && ok;
+    }
     if (set_.meshMotion != "none")
     {
         pointIOField pts
@@ -246,6 +304,38 @@ bool Foam::ALENavierStokes::write(const word& timeName)
     }
     IOstream::defaultPrecision(precision);
     return ok;
+}
+
+
+void Foam::ALENavierStokes::readBackwardHistory()
+{
+    if (!backward_) return;
+    IOobject io
+    (
+        "backwardHistory", runTime_.timeName(), mesh_,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    if (!io.typeHeaderOk<IOField<scalar>>(true)) return;
+    const IOField<scalar> h(io);
+    const label n = nCellUnknowns();
+    const label nC = mesh_.nCells(), nF = mesh_.nFaces();
+    if (h.size() != 1 + n + nC + nF || !(h[0] > 0))
+    {
+        FatalErrorInFunction
+            << "Restart: " << h.objectPath() << ": " << h.size() << " values, not the "
+            << 1 + n + nC + nF << " of this mesh (step length, "
+            << n << " unknowns, " << nC << " cell volumes, " << nF
+            << " swept volumes), or a step length that is not positive"
+            << exit(FatalError);
+    }
+    label k = 0;
+    dt0_ = h[k++];
+    x00_.resize(n);
+    for (label i = 0; i < n; ++i) x00_(i) = h[k++];
+    V00_.setSize(nC);
+    for (label i = 0; i < nC; ++i) V00_[i] = h[k++];
+    for (label i = 0; i < nF; ++i) swept0_[i] = h[k++];
+    history_ = true;
 }
 
 
@@ -282,10 +372,19 @@ std::string Foam::ALENavierStokes::unknownName(int j) const
 std::vector<double> Foam::ALENavierStokes::state() const
 {
     // The cells' unknowns (the mesh unknowns follow from the points,
-    // written with the fields)
+    // written with the fields); with the backward scheme the level before
+    // the committed one: its unknowns, volumes, the faces' swept volumes
+    // and the step length
     const label n = nCellUnknowns();
     std::vector<double> s(x_.data(), x_.data() + n);
     s.insert(s.end(), x0_.data(), x0_.data() + n);
+    if (backward_ && history_)
+    {
+        s.push_back(dt0_);
+        s.insert(s.end(), x00_.data(), x00_.data() + n);
+        s.insert(s.end(), V00_.begin(), V00_.end());
+        s.insert(s.end(), swept0_.begin(), swept0_.end());
+    }
     return s;
 }
 
@@ -293,18 +392,34 @@ std::vector<double> Foam::ALENavierStokes::state() const
 void Foam::ALENavierStokes::setState(const std::vector<double>& s)
 {
     const std::size_t n = nCellUnknowns();
-    if (s.size() != 2*n)
+    const std::size_t nC = mesh_.nCells(), nF = mesh_.nFaces();
+    const std::size_t withHistory = 3*n + 1 + nC + nF;
+    if (s.size() != 2*n && !(backward_ && s.size() == withHistory))
     {
         throw form::numericalError
         (
             "ALENavierStokes::setState: " + std::to_string(s.size())
           + " values, not " + std::to_string(2*n)
+          + (backward_ ? " or " + std::to_string(withHistory) : "")
         );
     }
     for (std::size_t i = 0; i < n; ++i)
     {
         x_(i) = s[i];
         x0_(i) = s[n + i];
+    }
+    // (a state without the level before, e.g. written by a run with the
+    // Euler scheme: the next step is an Euler step)
+    history_ = s.size() == withHistory;
+    if (history_)
+    {
+        std::size_t k = 2*n;
+        dt0_ = s[k++];
+        x00_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) x00_(i) = s[k++];
+        V00_.setSize(nC);
+        for (std::size_t i = 0; i < nC; ++i) V00_[i] = s[k++];
+        for (std::size_t i = 0; i < nF; ++i) swept0_[i] = s[k++];
     }
 }
 

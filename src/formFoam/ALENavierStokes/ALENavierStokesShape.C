@@ -44,11 +44,11 @@ Foam::ALEResidual<T> Foam::ALENavierStokes::residualAt
         }
         if constexpr (std::is_same<T, form::sparseDual>::value)
         {
-            Fm[f] = sweptVolumeSparse(faces[f], points0_, x)/dt_;
+            Fm[f] = meshFlux(f, sweptVolumeSparse(faces[f], points0_, x));
         }
         else
         {
-            Fm[f] = sweptVolume<T>(faces[f], points0_, x)/dt_;
+            Fm[f] = meshFlux(f, sweptVolume<T>(faces[f], points0_, x));
         }
     }
     ALEResidual<T> out;

@@ -48,7 +48,8 @@ void Foam::formScene::readSolution()
             "lineSearchMemory", "predictor",
             "growthFactor",
             "growthIterations", "summary", "integrator", "gamma", "mass",
-            "initialVelocity", "effectThreshold"
+            "initialVelocity", "effectThreshold", "newton",
+            "keptTangentContraction"
         }
     );
     const word analysis = d.getOrDefault<word>("analysis", "static");
@@ -135,6 +136,37 @@ void Foam::formScene::readSolution()
             << "Entry 'predictor' in " << d.name() << ": unknown '"
             << predictor_ << "'; valid: auto none extrapolate quadratic"
             << exit(FatalIOError);
+    }
+    // Newton's matrix: the tangent of every iterate, or kept factors while
+    // they contract the residual (staticSolver.H, "Kept tangent")
+    const word method = d.getOrDefault<word>("newton", "full");
+    if (!wordList{"full", "modified"}.found(method))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'newton' in " << d.name() << ": unknown '" << method
+            << "'; valid: full modified" << exit(FatalIOError);
+    }
+    newton_.keepTangent = method == "modified";
+    if (!newton_.keepTangent && d.found("keptTangentContraction"))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'keptTangentContraction' in " << d.name() << " needs"
+            << " newton modified (the method is full Newton)"
+            << exit(FatalIOError);
+    }
+    newton_.keptTangentContraction =
+        d.getOrDefault<scalar>("keptTangentContraction", 0.25);
+    if
+    (
+        !(newton_.keptTangentContraction > 0)
+     || !(newton_.keptTangentContraction < 1)
+    )
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'keptTangentContraction' in " << d.name() << " must be"
+            << " in (0, 1) (the residual reduction per iteration below which"
+            << " kept factors are refreshed), got "
+            << newton_.keptTangentContraction << exit(FatalIOError);
     }
     lineSearchType_ = d.getOrDefault<word>("lineSearchType", "auto");
     newton_.lineSearchMemory = d.getOrDefault<label>("lineSearchMemory", 0);
@@ -274,6 +306,17 @@ void Foam::formScene::printScene() const
              + std::to_string(newton_.lineSearchMemory + 1) + " iterates"
              : std::string()
            ).c_str() << nl
+        << "    Newton: "
+        << (
+               newton_.keepTangent
+             ? "modified (factors kept while each iteration cuts |r| to "
+             : "full (a new tangent at every iteration)"
+           );
+    if (newton_.keepTangent)
+    {
+        Info<< newton_.keptTangentContraction << " of the last)";
+    }
+    Info<< nl
         << "    predictor: "
         << (
                newton_.quadratic ? "quadratic extrapolation"

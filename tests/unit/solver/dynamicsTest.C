@@ -97,7 +97,9 @@ std::vector<sample> integrate
     const vecX& V0,
     bool lumped = false,
     std::ostream* logOut = nullptr,
-    energyBalance* energyOut = nullptr
+    energyBalance* energyOut = nullptr,
+    bool keepTangent = false,
+    int* tangents = nullptr
 )
 {
     c.model->setInertia(c.density, lumped);
@@ -109,6 +111,7 @@ std::vector<sample> integrate
     nc.energyTolerance = 1e-24;
     nc.absoluteForceTolerance = 1e-10;
     nc.lineSearch = false;
+    nc.keepTangent = keepTangent;
     stepControls sc;
     sc.startTime = 0;
     sc.endTime = tEnd;
@@ -123,8 +126,10 @@ std::vector<sample> integrate
     (
         {0, c.model->U(), integrator.velocity(), integrator.acceleration()}
     );
+    if (tangents) *tangents = 0;
     s.run([&](const stepReport& r)
     {
+        if (tangents) *tangents += r.newTangents;
         out.push_back
         (
             {
@@ -451,4 +456,51 @@ TEST(dynamics, BadInput)
     timeIntegrator integrator("trapezoidal");
     // No inertia built: a static model cannot be integrated in time
     EXPECT_THROW(integrator.initialise(*c.model, 0, vecX()), numericalError);
+}
+
+
+TEST(dynamics, KeptTangentFactorisesOncePerStageOfALinearChain)
+{
+    // The Bathe & Noh chain (linear): with kept tangents each stage of the
+    // scheme keeps its own factors (the stages' tangents differ by their
+    // acceleration coefficients), so the whole run factorises once per
+    // stage and solves every later step with them, to full Newton's states
+    for (const std::string scheme : {"trapezoidal", "bathe"})
+    {
+        std::vector<sample> s[2];
+        int tangents[2];
+        for (const bool keep : {false, true})
+        {
+            chainModel c = springChain
+            (
+                {1e7, 1}, {1, 1}, [](double t) { return std::sin(1.2*t); }
+            );
+            vecX V0 = vecX::Zero(6);
+            V0(0) = V0(2) = 1.2;
+            std::ostringstream log;
+            s[keep] = integrate
+            (
+                c, scheme, 0.2618, 0.2618*20, V0, false, &log, nullptr,
+                keep, &tangents[keep]
+            );
+            if (keep)
+            {
+                EXPECT_NE(log.str().find("  kept"), std::string::npos);
+            }
+        }
+        const int stages = scheme == "bathe" ? 2 : 1;
+        ASSERT_EQ(s[0].size(), s[1].size());
+        EXPECT_EQ(tangents[0], 20*stages);
+        EXPECT_EQ(tangents[1], stages) << scheme;
+        double err = 0, size = 0;
+        for (std::size_t k = 0; k < s[0].size(); ++k)
+        {
+            err = std::max(err, (s[1][k].U - s[0][k].U).norm());
+            size = std::max(size, s[0][k].U.norm());
+        }
+        EXPECT_LE(err, 1e-9*size) << scheme;
+        std::cout << "    " << scheme << ": " << tangents[0] << " -> "
+            << tangents[1] << " factorisations, largest difference of U "
+            << err << " (|U| up to " << size << ")\n";
+    }
 }

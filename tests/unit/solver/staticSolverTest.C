@@ -3,6 +3,7 @@
 // recovery, convergenceError, state after failure, step control.
 #include "staticSolver.H"
 #include "testElements.H"
+#include "trussModels.H"
 #include <gtest/gtest.h>
 #include <cmath>
 #include <functional>
@@ -13,79 +14,6 @@ using namespace form::test;
 
 namespace
 {
-
-std::shared_ptr<trussMaterial> barLaw
-(
-    bool svk, double EA, double Fs = 0, double c3 = 0
-)
-{
-    auto m = std::make_shared<trussMaterial>();
-    m->svk = svk;
-    m->EA = EA;
-    m->Fs = Fs;
-    m->c3 = c3;
-    return m;
-}
-
-// Face set "load" on element e of the single block (nodes a, b)
-void addLoadFaces(feMesh& mesh, const std::vector<int>& elements)
-{
-    for (int e : elements)
-    {
-        const int* n = mesh.blocks[0].nodes(e);
-        mesh.faceSets["load"].push_back({0, e, 0, {n[0], n[1]}});
-    }
-}
-
-// Von Mises truss A(0,0) - B(1,h) - C(2.5,0), A and C pinned, B loaded
-// downwards by a dead traction on bar AB (half of q L_AB reaches B)
-solidModel vonMisesTruss(double h, double q, std::shared_ptr<material> m)
-{
-    registerTestElements();
-    matX X(3, 2);
-    X << 0, 0, 1, h, 2.5, 0;
-    feMesh mesh = trussMesh(X, {{0, 1}, {1, 2}});
-    addLoadFaces(mesh, {0});
-    solidModel model(mesh, analysisType::planeStrain, {{"bar", m}});
-    model.addConstraint({0, 2}, 0);
-    model.addConstraint({0, 2}, 1);
-    model.addTraction("load", [q](double t)
-    {
-        return vec3(0, -q*t, 0);
-    });
-    model.finalise();
-    return model;
-}
-
-// One bar (0,0)-(1,0) along x, node 0 pinned, node 1 on a roller, pulled
-// by the end force F(t) (traction 2F on the unit bar: half reaches node 1)
-solidModel pulledBar
-(
-    const std::function<double(double)>& F,
-    std::shared_ptr<material> m
-)
-{
-    registerTestElements();
-    matX X(2, 2);
-    X << 0, 0, 1, 0;
-    feMesh mesh = trussMesh(X, {{0, 1}});
-    addLoadFaces(mesh, {0});
-    solidModel model(mesh, analysisType::planeStrain, {{"bar", m}});
-    model.addConstraint({0}, 0);
-    model.addConstraint({0, 1}, 1);
-    model.addTraction("load", [F](double t)
-    {
-        return vec3(2*F(t), 0, 0);
-    });
-    model.finalise();
-    return model;
-}
-
-// ... by the end force F t
-solidModel pulledBar(double F, std::shared_ptr<material> m)
-{
-    return pulledBar([F](double t) { return F*t; }, m);
-}
 
 // Rates log(r_{k+1}/ref)/log(r_k/ref) for iterates in the asymptotic range
 std::vector<double> convergenceRates(const std::vector<double>& r, double ref)
