@@ -135,12 +135,22 @@ else
     fail "piston fine: formFoam failed"; tail -20 "$work/fine/log.formFoam"
 fi
 
+# dynamicEdits <ddt scheme>: the case edits (array dyn) of the dynamic
+# piston: the plug with mass under the trapezoidal rule, steps of 0.05,
+# the oil's ddt scheme
+dynamicEdits()
+{
+    dyn=(
+        "sed -i 's/^analysis .*/analysis dynamic;\nintegrator trapezoidal;\nmass consistent;/' system/solidSolution"
+        "sed -i 's/E 100; nu 0.3;/E 100; nu 0.3; rho 1;/' constant/plug/solidProperties"
+        "sed -i 's/default steadyState;/default $1;/' system/oil/fvSchemes"
+        "sed -i 's/^deltaT .*/deltaT 0.05;/' system/controlDict"
+    )
+}
+
 #- Dynamic: trapezoidal rule for the plug, Euler for the oil
-FORMFOAM_ARGS=-checkTangent runPiston "$work/dyn" \
-    "sed -i 's/^analysis .*/analysis dynamic;\nintegrator trapezoidal;\nmass consistent;/' system/solidSolution" \
-    "sed -i 's/E 100; nu 0.3;/E 100; nu 0.3; rho 1;/' constant/plug/solidProperties" \
-    "sed -i 's/default steadyState;/default Euler;/' system/oil/fvSchemes" \
-    "sed -i 's/^deltaT .*/deltaT 0.05;/' system/controlDict"
+dynamicEdits Euler
+FORMFOAM_ARGS=-checkTangent runPiston "$work/dyn" "${dyn[@]}"
 log=$work/dyn/log.formFoam
 if grep -q '^End' "$log"; then
     pass "piston dynamic: ran"
@@ -160,14 +170,9 @@ fi
 #  matrix with the scheme's older level, and a restart from the middle
 #  (the level before the restart time, backwardHistory, read back)
 #  reproduces the continuous run
-dynBackward=(
-    "sed -i 's/^analysis .*/analysis dynamic;\nintegrator trapezoidal;\nmass consistent;/' system/solidSolution"
-    "sed -i 's/E 100; nu 0.3;/E 100; nu 0.3; rho 1;/' constant/plug/solidProperties"
-    "sed -i 's/default steadyState;/default backward;/' system/oil/fvSchemes"
-    "sed -i 's/^deltaT .*/deltaT 0.05;/' system/controlDict"
-)
-FORMFOAM_ARGS=-checkTangent runPiston "$work/bdf" "${dynBackward[@]}"
-FORMFOAM_ARGS= runPiston "$work/bdfr" "${dynBackward[@]}" \
+dynamicEdits backward
+FORMFOAM_ARGS=-checkTangent runPiston "$work/bdf" "${dyn[@]}"
+FORMFOAM_ARGS= runPiston "$work/bdfr" "${dyn[@]}" \
     "sed -i 's/^writeInterval .*/writeInterval 0.5;/; s/^endTime .*/endTime 0.5;/' system/controlDict"
 (
     cd "$work/bdfr" || exit 1
@@ -192,11 +197,9 @@ fi
 #- Dynamic with kept tangents (solidSolution newton modified): the same
 #  states as full Newton (the dynamic run above) to its tolerance, with
 #  fewer factorisations than iterations
-FORMFOAM_ARGS= runPiston "$work/kept" \
-    "sed -i 's/^analysis .*/analysis dynamic;\nintegrator trapezoidal;\nmass consistent;\nnewton modified;/' system/solidSolution" \
-    "sed -i 's/E 100; nu 0.3;/E 100; nu 0.3; rho 1;/' constant/plug/solidProperties" \
-    "sed -i 's/default steadyState;/default Euler;/' system/oil/fvSchemes" \
-    "sed -i 's/^deltaT .*/deltaT 0.05;/' system/controlDict"
+dynamicEdits Euler
+FORMFOAM_ARGS= runPiston "$work/kept" "${dyn[@]}" \
+    "sed -i 's/^mass consistent;/&\nnewton modified;/' system/solidSolution"
 log=$work/kept/log.formFoam
 if grep -q '^End' "$log"; then
     checkClose "piston dynamic, kept tangent: lift = full Newton's" \
