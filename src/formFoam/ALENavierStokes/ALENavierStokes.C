@@ -157,6 +157,7 @@ Foam::ALENavierStokes::ALENavierStokes
         corrected_ = lw[2] == "corrected";
     }
 
+    restoreInitialConditions();
     classifyPatches();
 
     // Unknowns from the fields

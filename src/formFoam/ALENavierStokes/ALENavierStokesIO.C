@@ -307,6 +307,55 @@ bool Foam::ALENavierStokes::write(const word& timeName)
 }
 
 
+void Foam::ALENavierStokes::restoreInitialConditions()
+{
+    // The first time directory that holds the fluid's U
+    word first;
+    scalar firstValue = GREAT;
+    for (const instant& t : runTime_.times())
+    {
+        if (t.name() == runTime_.constant()) continue;
+        IOobject io
+        (
+            "U", t.name(), mesh_, IOobject::MUST_READ, IOobject::NO_WRITE,
+            false
+        );
+        if (t.value() < firstValue && io.typeHeaderOk<volVectorField>(true))
+        {
+            first = t.name();
+            firstValue = t.value();
+        }
+    }
+    if (first.empty() || first == runTime_.timeName()) return;
+    const volVectorField U0
+    (
+        IOobject
+        (
+            "U", first, mesh_, IOobject::MUST_READ, IOobject::NO_WRITE,
+            false
+        ),
+        mesh_
+    );
+    const volScalarField p0
+    (
+        IOobject
+        (
+            "p", first, mesh_, IOobject::MUST_READ, IOobject::NO_WRITE,
+            false
+        ),
+        mesh_
+    );
+    forAll(mesh_.boundary(), patchi)
+    {
+        U_.boundaryFieldRef().set(patchi, U0.boundaryField()[patchi].clone(U_));
+        p_.boundaryFieldRef().set(patchi, p0.boundaryField()[patchi].clone(p_));
+    }
+    Info<< "    fluid region " << mesh_.name() << ": boundary conditions of U"
+        << " and p from " << first << "/" << mesh_.name()
+        << " (the case's input)" << endl;
+}
+
+
 void Foam::ALENavierStokes::readBackwardHistory()
 {
     if (!backward_) return;
