@@ -65,6 +65,10 @@ checkBelow "channel: profile error second order [2 - log2(e10/e20) < 0.2]" \
 g=$(calc '(a - b)/4' a="$(summaryValue "$work/ch2" pressureAt4)" b="$(summaryValue "$work/ch2" pressureAt8)")
 checkClose "channel: developed pressure gradient vs 12 mu U/h^2 = 1.2" "$g" 1.2 0.01
 
+# The case edit that puts the ramped parabolic inlet (tests/cases/rampedInlet)
+# into the channel's 0/water/U
+rampInlet="python3 -c \"import re; p='0/water/U'; s=open(p).read(); s=re.sub(r'    inlet\\n    \\{[^}]*\\}', open('$here/rampedInlet').read().rstrip(), s); open(p,'w').write(s)\""
+
 #- A time-dependent inlet through OpenFOAM's own conditions: the parabolic
 #  profile u = 6 U y (h - y)/h^2 (mean U = 1, h = 1) ramped by Turek &
 #  Hron's 0.5 (1 - cos(pi t/2)) for t < 2 (uniformFixedValue: a scale
@@ -76,7 +80,7 @@ FORMFOAM_ARGS= runFluid poiseuilleChannel "$work/ramp" \
     "sed -i 's/^ddtSchemes .*/ddtSchemes      { default Euler; }/' system/water/fvSchemes" \
     "sed -i 's/^endTime .*/endTime         3;/; s/^deltaT .*/deltaT          0.25;/' system/controlDict" \
     "sed -i 's/^\\( *centreVelocity .*\\)\$/\\1\\n    inflowAt05 { type fluidFlowRate; patch inlet; time 0.5; }\\n    inflowAt1 { type fluidFlowRate; patch inlet; time 1; }\\n    inflowAt3 { type fluidFlowRate; patch inlet; time 3; }/' system/solidSolution" \
-    "python3 -c \"import re; p='0/water/U'; s=open(p).read(); s=re.sub(r'    inlet\\n    \\{[^}]*\\}', open('$here/rampedInlet').read().rstrip(), s); open(p,'w').write(s)\""
+    "$rampInlet"
 if grep -q '^End' "$work/ramp/log.formFoam"; then
     pass "ramped inlet: ran (12 transient steps)"
     q3=$(summaryValue "$work/ramp" inflowAt3)
@@ -101,7 +105,7 @@ for scheme in Euler backward; do
         FORMFOAM_ARGS= runFluid poiseuilleChannel "$work/ord$scheme$n" \
             "sed -i 's/^ddtSchemes .*/ddtSchemes      { default $scheme; }/' system/water/fvSchemes" \
             "sed -i 's/^deltaT .*/deltaT          $(calc '1/n' n=$n);/' system/controlDict" \
-            "python3 -c \"import re; p='0/water/U'; s=open(p).read(); s=re.sub(r'    inlet\\n    \\{[^}]*\\}', open('$here/rampedInlet').read().rstrip(), s); open(p,'w').write(s)\""
+            "$rampInlet"
     done
     p1=$(summaryValue "$work/ord${scheme}20" pressureAt4)
     p2=$(summaryValue "$work/ord${scheme}40" pressureAt4)
