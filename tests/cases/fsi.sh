@@ -213,6 +213,34 @@ else
     fail "piston dynamic, kept tangent: formFoam failed"; tail -20 "$log"
 fi
 
+#- The stiffened mesh motion (meshMotion diffusivity inverseDistance,
+#  exponent 1.5): other interior points, the same plug (the oil's flow is
+#  uniform across and linear along the column on any of its meshes), and
+#  the Newton matrix's mesh rows with the distance-weighted Laplacian
+FORMFOAM_ARGS=-checkTangent runPiston "$work/stiff" \
+    "echo 'meshMotion { diffusivity inverseDistance; exponent 1.5; }' >> constant/oil/fluidProperties"
+log=$work/stiff/log.formFoam
+if grep -q '^End' "$log"; then
+    grep -q "mesh motion: harmonic (diffusivity inverseDistance, exponent 1.5" "$log" \
+        && pass "piston ALE, inverse-distance mesh motion: the log says which" \
+        || fail "piston ALE, inverse-distance mesh motion: not in the log"
+    checkClose "piston ALE, inverse-distance mesh motion: plug lift" \
+        "$(summaryValue "$work/stiff" plugLift)" "$dExact" 1e-4
+    checkBelow "piston ALE, inverse-distance mesh motion: coupled Newton matrix vs finite differences" \
+        "$(tangentError "$log")" 1e-7
+    # the interior points moved otherwise (the first cell row's top)
+    p0=$(ls -d "$work/ale"/[1-9]* | sort -g | tail -1)/oil/polyMesh/points
+    p1=$(ls -d "$work/stiff"/[1-9]* | sort -g | tail -1)/oil/polyMesh/points
+    if [ -f "$p0" ] && [ -f "$p1" ]; then
+        cmp -s "$p0" "$p1" && fail "piston ALE, inverse-distance mesh motion: the same points as the uniform one" \
+            || pass "piston ALE, inverse-distance mesh motion: the interior points differ"
+    else
+        fail "piston ALE, inverse-distance mesh motion: no points written"
+    fi
+else
+    fail "piston ALE, inverse-distance mesh motion: formFoam failed"; tail -20 "$log"
+fi
+
 #- Bad input
 base=$work/base
 FORMFOAM_ARGS= runPiston "$base"
@@ -246,6 +274,19 @@ tryCase "injection without an inlet" \
 tryCase "fixed pressure on the interface" \
     "Patch 'top' in 0/oil/p: the pressure on the interface with the solid is the fluid's own" \
     "sed -i 's/top          { type zeroGradient; }/top { type fixedValue; value uniform 0; }/' 0/oil/p"
+
+tryCase "unknown mesh-motion diffusivity" \
+    "Entry 'meshMotion/diffusivity' in constant/oil/fluidProperties: unknown 'quadratic'; valid: 2\(uniform inverseDistance\)" \
+    "echo 'meshMotion { diffusivity quadratic; }' >> constant/oil/fluidProperties"
+tryCase "mesh-motion exponent without inverseDistance" \
+    "Entry 'meshMotion/exponent' in constant/oil/fluidProperties belongs to diffusivity inverseDistance" \
+    "echo 'meshMotion { exponent 2; }' >> constant/oil/fluidProperties"
+tryCase "mesh-motion exponent out of range" \
+    "Entry 'meshMotion/exponent' in constant/oil/fluidProperties is out of range: -1" \
+    "echo 'meshMotion { diffusivity inverseDistance; exponent -1; }' >> constant/oil/fluidProperties"
+tryCase "mesh-motion diffusivity a dictionary" \
+    "file: .*constant/oil/fluidProperties.meshMotion.diffusivity at line" \
+    "echo 'meshMotion { diffusivity { type inverseDistance; } }' >> constant/oil/fluidProperties"
 
 tryCase "unknown Newton method" \
     "Entry 'newton' in .*solidSolution.?: unknown 'quasi'; valid: full modified" \

@@ -353,13 +353,16 @@ void Foam::fluidRegion::buildALE
     set.bulkModulus = readBulkModulus(dict_, file);
     set.incompressible = !std::isfinite(set.bulkModulus);
     if (set.incompressible) set.bulkModulus = GREAT;
+    meshDiffusivity diffusivity;
     if (dict_.found("meshMotion"))
     {
         const dictionary& md =
             subDictOf(dict_, "meshMotion", "{ type ...; }");
         checkKeywords
         (
-            md, {"type", "amplitude", "period", "maxNonOrthogonality"}
+            md,
+            {"type", "amplitude", "period", "maxNonOrthogonality",
+             "diffusivity", "exponent"}
         );
         set.meshMotion = md.getOrDefault<word>("type", "none");
         if (solid_ && set.meshMotion != "none")
@@ -396,6 +399,18 @@ void Foam::fluidRegion::buildALE
                 << "Entry 'meshMotion/type' in " << file.c_str() << ": unknown '"
                 << set.meshMotion << "'; valid: none oscillating"
                 << exit(FatalIOError);
+        }
+        if (md.found("diffusivity") || md.found("exponent"))
+        {
+            if (!solid_)
+            {
+                FatalIOErrorInFunction(md)
+                    << "Entry 'meshMotion/diffusivity' in " << file.c_str()
+                    << ": the diffusivity belongs to the motion of a mesh"
+                    << " that follows a solid; fluid region '" << name_
+                    << "' has none" << exit(FatalIOError);
+            }
+            diffusivity = meshDiffusivity::read(md, file);
         }
     }
 
@@ -524,7 +539,8 @@ void Foam::fluidRegion::buildALE
         auto itf = std::make_shared<fluidSolidInterface>
         (
             mesh_(), ale_->referencePoints(), set.interfacePatches,
-            solid_->feMesh(), dict_.get<wordList>("interface"), slip, file
+            solid_->feMesh(), dict_.get<wordList>("interface"), slip, file,
+            diffusivity
         );
         ale_->setInterface(itf, solid_->model());
         if (dict_.found("initialVolume"))

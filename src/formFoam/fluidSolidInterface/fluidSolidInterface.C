@@ -85,12 +85,14 @@ Foam::fluidSolidInterface::fluidSolidInterface
     const polyMeshToFeMesh& solid,
     const wordList& solidPatches,
     const wordList& slipPatches,
-    const fileName& file
+    const fileName& file,
+    const meshDiffusivity& diffusivity
 )
 :
     fluid_(fluid),
     solid_(solid),
     dofMap_(form::dofMap::of(solid.feMesh())),
+    diffusivity_(diffusivity),
     points0_(referencePoints)
 {
     const polyBoundaryMesh& bm = fluid_.boundaryMesh();
@@ -144,6 +146,8 @@ Foam::fluidSolidInterface::fluidSolidInterface
         return label(q2D.size() - 1);
     };
     std::vector<scalar> pointFaceLength;
+    // The interface faces' in-plane segments (the diffusivity's distance)
+    std::vector<std::array<Eigen::Vector2d, 2>> segments;
     for (const word& name : fluidPatches)
     {
         const label patchi = bm.findPatchID(name);
@@ -178,6 +182,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
             }
             const scalar len = (q2D[ends[0]] - q2D[ends[1]]).norm();
             minFaceLength_ = min(minFaceLength_, len);
+            segments.push_back({q2D[ends[0]], q2D[ends[1]]});
             pointFaceLength.resize(q2D.size(), GREAT);
             for (const label k : ends)
             {
@@ -357,65 +362,7 @@ Foam::fluidSolidInterface::fluidSolidInterface
         pointUnit[p] = it->second;
     }
 
-    // The mesh equations (4) per component: each free unit's row sums its
-    // points' Laplace equations; weights relative to the mean square edge
-    scalar l2 = 0;
-    label nEdges = 0;
-    for (const edge& e : meshEdges)
-    {
-        const scalar len = (q[e[0]] - q[e[1]]).norm();
-        if (len < tol) continue;
-        l2 += sqr(len);
-        ++nEdges;
-    }
-    l2 /= max(nEdges, label(1));
-    const label nI = q2D.size();
-    for (label c = 0; c < 2; ++c)
-    {
-        const label nF = nUnknowns_[c];
-        std::vector<Eigen::Triplet<double>> tL, tB;
-        for (const edge& e : meshEdges)
-        {
-            const scalar len = (q[e[0]] - q[e[1]]).norm();
-            if (len < tol) continue;
-            const scalar w = l2/sqr(len);
-            for (label s = 0; s < 2; ++s)
-            {
-                const label u = pointUnit[s ? e[1] : e[0]];
-                const label o = pointUnit[s ? e[0] : e[1]];
-                const label row = unknown_[c][u];
-                if (row < 0) continue;
-                tL.emplace_back(row, row, w);
-                if (unknown_[c][o] >= 0)
-                {
-                    tL.emplace_back(row, unknown_[c][o], -w);
-                }
-                else if (unitKind_[c][o] >= 0)
-                {
-                    tB.emplace_back(row, unitKind_[c][o], -w);
-                }
-            }
-        }
-        L_[c].resize(nF, nF);
-        L_[c].setFromTriplets(tL.begin(), tL.end());
-        B_[c].resize(nF, nI);
-        B_[c].setFromTriplets(tB.begin(), tB.end());
-        if (!nF) continue;
-        ldlt_[c].compute(L_[c]);
-        if
-        (
-            ldlt_[c].info() != Eigen::Success
-         || !(ldlt_[c].vectorD().minCoeff() > 1e-12*ldlt_[c].vectorD().maxCoeff())
-        )
-        {
-            FatalErrorInFunction
-                << "Fluid region '" << region << "' (" << file.c_str() << "): the"
-                << " mesh motion has points free in the "
-                << (c ? "axial (y)" : "radial (x)") << " direction that no"
-                << " wall, inlet, outlet or interface holds; fix a patch"
-                << exit(FatalError);
-        }
-    }
+    buildMeshEquations(q, pointUnit, segments, q2D.size(), tol, file);
 }
 
 
@@ -491,7 +438,12 @@ std::string Foam::fluidSolidInterface::describe() const
     os  << "interface: " << faces_.size() << " fluid faces, "
         << pointIds_.size() << " interface points projected onto the solid"
         << " (largest distance " << gap << "); mesh motion: harmonic"
-        << " (discrete Laplace equations of " << nUnknowns_[0] << '/'
+        << " (diffusivity " << diffusivity_.type;
+    if (diffusivity_.type == "inverseDistance")
+    {
+        os  << ", exponent " << diffusivity_.exponent;
+    }
+    os  << "; discrete Laplace equations of " << nUnknowns_[0] << '/'
         << nUnknowns_[1] << " free points (r/z) in the Newton system)";
     return os.str();
 }

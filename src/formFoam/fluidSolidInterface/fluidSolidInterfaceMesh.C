@@ -3,11 +3,150 @@
 -------------------------------------------------------------------------------
 Description
     fluidSolidInterface: the mesh motion (fluidSolidInterface.H, eq. (4)):
-    the interface points' displacements, the mesh equations and their
-    matrix, their harmonic solution, the points of a state and the mesh
+    the diffusivity, the mesh equations and their matrix, the interface
+    points' displacements, the harmonic solution, the points of a state and the mesh
     unknowns of given points.
 \*---------------------------------------------------------------------------*/
 #include "fluidSolidInterface.H"
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::meshDiffusivity Foam::meshDiffusivity::read
+(
+    const dictionary& md,
+    const fileName& file
+)
+{
+    meshDiffusivity k;
+    k.type = md.getOrDefault<word>("diffusivity", k.type);
+    if (!types().found(k.type))
+    {
+        FatalIOErrorInFunction(md)
+            << "Entry 'meshMotion/diffusivity' in " << file.c_str()
+            << ": unknown '" << k.type << "'; valid: " << types()
+            << exit(FatalIOError);
+    }
+    if (md.found("exponent"))
+    {
+        if (k.type != "inverseDistance")
+        {
+            FatalIOErrorInFunction(md)
+                << "Entry 'meshMotion/exponent' in " << file.c_str()
+                << " belongs to diffusivity inverseDistance (the diffusivity"
+                << " is " << k.type << ")" << exit(FatalIOError);
+        }
+        k.exponent = md.get<scalar>("exponent");
+        if (!(k.exponent > 0 && k.exponent <= 4))
+        {
+            FatalIOErrorInFunction(md)
+                << "Entry 'meshMotion/exponent' in " << file.c_str()
+                << " is out of range: " << k.exponent << " (valid: (0, 4];"
+                << " 1 inverse, 2 quadratic inverse distance)"
+                << exit(FatalIOError);
+        }
+    }
+    return k;
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fluidSolidInterface::diffusivity
+(
+    const Eigen::Vector2d& x,
+    const std::vector<std::array<Eigen::Vector2d, 2>>& segments
+) const
+{
+    if (diffusivity_.type != "inverseDistance") return 1;
+    // In-plane distance to the interface: its nearest face segment
+    scalar r2 = GREAT;
+    for (const auto& ab : segments)
+    {
+        const Eigen::Vector2d t = ab[1] - ab[0];
+        const scalar s =
+            std::min(1.0, std::max(0.0, (x - ab[0]).dot(t)/t.squaredNorm()));
+        r2 = min(r2, (ab[0] + s*t - x).squaredNorm());
+    }
+    const scalar r0 = minFaceLength_;
+    return std::pow(r0/max(std::sqrt(r2), r0), diffusivity_.exponent);
+}
+
+
+void Foam::fluidSolidInterface::buildMeshEquations
+(
+    const List<Eigen::Vector2d>& q,
+    const labelList& pointUnit,
+    const std::vector<std::array<Eigen::Vector2d, 2>>& segments,
+    label nI,
+    scalar tol,
+    const fileName& file
+)
+{
+    const edgeList& meshEdges = fluid_.edges();
+    scalar l2 = 0;
+    label nEdges = 0;
+    for (const edge& e : meshEdges)
+    {
+        const scalar len = (q[e[0]] - q[e[1]]).norm();
+        if (len < tol) continue;
+        l2 += sqr(len);
+        ++nEdges;
+    }
+    l2 /= max(nEdges, label(1));
+    for (label c = 0; c < 2; ++c)
+    {
+        const label nF = nUnknowns_[c];
+        std::vector<Eigen::Triplet<double>> tL, tB;
+        for (const edge& e : meshEdges)
+        {
+            const scalar len = (q[e[0]] - q[e[1]]).norm();
+            if (len < tol) continue;
+            const scalar w =
+                l2/sqr(len)*diffusivity(0.5*(q[e[0]] + q[e[1]]), segments);
+            for (label s = 0; s < 2; ++s)
+            {
+                const label u = pointUnit[s ? e[1] : e[0]];
+                const label o = pointUnit[s ? e[0] : e[1]];
+                const label row = unknown_[c][u];
+                if (row < 0) continue;
+                tL.emplace_back(row, row, w);
+                if (unknown_[c][o] >= 0)
+                {
+                    tL.emplace_back(row, unknown_[c][o], -w);
+                }
+                else if (unitKind_[c][o] >= 0)
+                {
+                    tB.emplace_back(row, unitKind_[c][o], -w);
+                }
+            }
+        }
+        L_[c].resize(nF, nF);
+        L_[c].setFromTriplets(tL.begin(), tL.end());
+        B_[c].resize(nF, nI);
+        B_[c].setFromTriplets(tB.begin(), tB.end());
+        if (!nF) continue;
+        ldlt_[c].compute(L_[c]);
+        if
+        (
+            ldlt_[c].info() != Eigen::Success
+         || !(
+                (
+                    ldlt_[c].vectorD().array()
+                  - 1e-12*(ldlt_[c].permutationP()*L_[c].diagonal()).array()
+                ).minCoeff() > 0
+             )
+        )
+        {
+            FatalErrorInFunction
+                << "Fluid region '" << fluid_.name() << "' (" << file.c_str() << "): the"
+                << " mesh motion has points free in the "
+                << (c ? "axial (y)" : "radial (x)") << " direction that no"
+                << " wall, inlet, outlet or interface holds; fix a patch"
+                << exit(FatalError);
+        }
+    }
+}
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 

@@ -82,9 +82,13 @@ std::map<std::string, std::string> interfaceCase()
 
 struct interfaceFixture
 {
-    explicit interfaceFixture(const Foam::wordList& slip = {})
+    explicit interfaceFixture
+    (
+        const Foam::wordList& slip = {},
+        const Foam::meshDiffusivity& k = Foam::meshDiffusivity()
+    )
     :
-        itf(fluid, points0, {"wet"}, solid, {"top"}, slip, "fluidProperties")
+        itf(fluid, points0, {"wet"}, solid, {"top"}, slip, "fluidProperties", k)
     {}
     scratchCase c{interfaceCase(), {"fluid", "solid"}};
     Foam::polyMeshToFeMesh solid{c.mesh("solid"), 2, "solidProperties", 9, "Q9P3", "steel"};
@@ -213,10 +217,25 @@ TEST(fluidSolidInterface, ForcesAndPowerReachTheSolidExactly)
 
 TEST(fluidSolidInterface, MeshEquationsAreEveryFreePointsLaplaceEquation)
 {
-    for (const bool slip : {false, true})
+    // uniform diffusivity, and the inverse distance (exponent 1.5) from the
+    // interface y = 0 (r_0 = 1/3, its faces' length): k = (r_0/max(y, r_0))^1.5
+    // at the edge's midpoint
+    Foam::meshDiffusivity inverse;
+    inverse.type = "inverseDistance";
+    inverse.exponent = 1.5;
+    for (const int variant : {0, 1, 2})
     {
-        interfaceFixture f(slip ? Foam::wordList{"walls"} : Foam::wordList{});
-        SCOPED_TRACE(slip ? "side walls sliding" : "side walls fixed");
+        const bool slip = variant == 1;
+        const bool stiff = variant == 2;
+        interfaceFixture f
+        (
+            slip ? Foam::wordList{"walls"} : Foam::wordList{},
+            stiff ? inverse : Foam::meshDiffusivity()
+        );
+        SCOPED_TRACE
+        (
+            stiff ? "inverse distance" : slip ? "side walls sliding" : "side walls fixed"
+        );
         const int nDofs = 2*int(f.solid.feMesh().X.rows());
         std::mt19937 rng(11);
         const vecX U = randomVector(nDofs, rng, 0.05);
@@ -226,6 +245,8 @@ TEST(fluidSolidInterface, MeshEquationsAreEveryFreePointsLaplaceEquation)
         // sliding in y
         EXPECT_EQ(f.itf.nMeshUnknowns(), slip ? 12 : 8);
         const Foam::pointField x(f.itf.points(U, d));
+        const double r0 = f.itf.minFaceLength();
+        EXPECT_NEAR(r0, 1/3.0, 1e-6);
         // Every free 3D point p, component c: sum over its edges of
         // (d_q - d_p) . e_c / |edge|^2 = 0 (the reference's edge lengths)
         labelList unitOfPoint(x.size(), -1);
@@ -246,8 +267,11 @@ TEST(fluidSolidInterface, MeshEquationsAreEveryFreePointsLaplaceEquation)
                     Foam::vector l = f.points0[q] - f.points0[p];
                     l.z() = 0;
                     if (Foam::mag(l) < 1e-12) continue;
+                    const double y = 0.5*(f.points0[p].y() + f.points0[q].y());
+                    const double k =
+                        stiff ? std::pow(r0/std::max(y, r0), 1.5) : 1;
                     const double term =
-                        ((x[q] - f.points0[q]) - (x[p] - f.points0[p]))
+                        k*((x[q] - f.points0[q]) - (x[p] - f.points0[p]))
                       & f.itf.direction(p, c);
                     sum += term/Foam::magSqr(l);
                     size += std::abs(term)/Foam::magSqr(l);
