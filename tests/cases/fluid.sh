@@ -252,6 +252,9 @@ tryCase "fluid: convection scheme without an exact Newton matrix" \
 tryCase "fluid: unknown mesh motion" \
     "Entry 'meshMotion/type' in .?constant/water/fluidProperties.?: unknown 'wobbly'" \
     "$mesh; echo 'meshMotion { type wobbly; }' >> $fp"
+tryCase "fluid alone: a mesh-motion diffusivity without a solid" \
+    "Entry 'meshMotion/diffusivity' in .?constant/water/fluidProperties.?: the diffusivity belongs to the motion of a mesh that follows a solid; fluid region 'water' has none" \
+    "$mesh; echo 'meshMotion { diffusivity inverseDistance; }' >> $fp"
 tryCase "fluid alone: dynamic analysis needs a solid" \
     "dynamic analysis integrates a solid's inertia, and the scene has no solid region" \
     "$mesh; sed -i 's/^analysis .*/analysis dynamic;/' system/solidSolution"
