@@ -16,7 +16,7 @@
 #   - and against the benchmark: the coarse meshes' errors (the README's
 #     table) within bounds a little wider than observed;
 #   - the kept factorisations: fewer than a third of the Newton
-#     iterations (observed 0.19: at the flag's full swing the kept factors
+#     iterations (observed 0.15: at the flag's full swing the kept factors
 #     are refreshed about three times in four stages).
 . "$(dirname "$0")/testFunctions"
 . "$(dirname "$0")/turekHronUnsteady"

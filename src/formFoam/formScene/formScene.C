@@ -429,8 +429,21 @@ void Foam::formScene::run()
             dir/"effects"
         );
     }
+    // The phases are this process's: so are the steps, iterations and
+    // wall time they are reported with (the summary's wallTime and
+    // iterations count from t = 0 across restarts)
     const form::phaseTimes& t = model.times();
-    Info<< nl << "Time per phase (s)" << nl
+    const label runSteps = totals_.steps - restored_.steps;
+    const label runIterations = totals_.iterations - restored_.iterations;
+    Info<< nl << "Time per phase (s)";
+    if (restored_.steps)
+    {
+        Info<< " of this run (restarted after step " << restored_.steps
+            << "; from t = 0: " << totals_.steps << " steps, "
+            << totals_.iterations << " Newton iterations, wall time "
+            << wallTime << " s)";
+    }
+    Info<< nl
         << "    assembly        " << t.assembly << nl
         << "    contact         " << t.contact << nl
         << "    fluid           " << t.fluid << nl
@@ -448,12 +461,12 @@ void Foam::formScene::run()
         << (t.factorisation > 0 ? 1e-9*t.factorFlops/t.factorisation : 0)
         << " GFLOP/s)" << nl
         << "    output          " << t.output << nl
-        << "    total (wall)    " << wallTime << nl
-        << "    steps " << totals_.steps << ", Newton iterations "
-        << totals_.iterations << nl;
-    if (totals_.iterations > 0)
+        << "    total (wall)    " << elapsed() << nl
+        << "    steps " << runSteps << ", Newton iterations "
+        << runIterations << nl;
+    if (runIterations > 0)
     {
-        const scalar n = totals_.iterations;
+        const scalar n = runIterations;
         Info<< "Time per Newton iteration (ms): assembly "
             << 1e3*t.assembly/n << ", contact " << 1e3*t.contact/n
             << ", fluid " << 1e3*t.fluid/n << ", linear solve " << 1e3*(t.factorisation + t.solve)/n << nl;

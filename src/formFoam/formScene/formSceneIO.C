@@ -239,6 +239,7 @@ void Foam::formScene::readRunState()
     totals_.cutbacks = d.get<label>("cutbacks");
     maxStepIterations_ = d.get<label>("maxIterationsInAStep");
     totals_.wallTime = d.get<scalar>("wallTime");
+    restored_ = totals_;
     if (solids_.size() || fluidOnlyModel_)
     {
         model().setForceLevel(d.get<scalar>("forceLevel"));
